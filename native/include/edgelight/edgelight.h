@@ -1,0 +1,304 @@
+/*
+ * EdgeLight native core: the one public header (C99-compatible).
+ *
+ * Conventions
+ *  - Every function that can fail returns an el_status; on failure el_last_error() (thread-local)
+ *    says what was wrong. Nothing here aborts the host process.
+ *  - Arrays cross the boundary as caller-owned pointer + count. Getters copy into caller buffers
+ *    whose capacity is given in elements of the array's record (an edge, a segment, ...).
+ *  - Positions are float32 xyz, triangles uint32 triples, matrices float32 4x4 row-major with
+ *    column vectors (p' = M * [x y z 1]^T, translation in elements 3, 7, 11) — numpy's layout of
+ *    Blender's Matrix.
+ *  - Handles are opaque; each *_create has a *_destroy. A view keeps its mesh's data alive, so
+ *    handles may be destroyed in any order. A handle is not safe for concurrent use; distinct
+ *    handles are.
+ */
+#ifndef EDGELIGHT_EDGELIGHT_H
+#define EDGELIGHT_EDGELIGHT_H
+
+#include <stdint.h>
+
+#if defined(_WIN32)
+#  define EL_API __declspec(dllexport)
+#else
+#  define EL_API __attribute__((visibility("default")))
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Bumped on every change of a signature, struct layout or enum value below. */
+#define EL_ABI_VERSION 1u
+
+typedef enum el_status {
+    EL_OK = 0,
+    EL_ERR_NULL_POINTER = 1,      /* a required pointer was NULL */
+    EL_ERR_INVALID_COUNT = 2,     /* zero or inconsistent count */
+    EL_ERR_INDEX_OUT_OF_RANGE = 3,/* an index refers past its array */
+    EL_ERR_NON_FINITE = 4,        /* NaN or Inf in an input */
+    EL_ERR_OVERFLOW = 5,          /* a count whose derived sizes would overflow */
+    EL_ERR_INVALID_ARGUMENT = 6,  /* a value outside its domain, or inconsistent inputs */
+    EL_ERR_BUFFER_TOO_SMALL = 7,  /* caller's capacity below what is needed */
+    EL_ERR_OUT_OF_MEMORY = 8,
+    EL_ERR_INTERNAL = 9           /* a bug: please report the message */
+} el_status;
+
+EL_API uint32_t el_abi_version(void);
+/* Message for the last failed call on this thread ("" after success). Valid until the next call. */
+EL_API const char* el_last_error(void);
+EL_API const char* el_status_name(el_status status);
+
+/* ------------------------------------------------------------------------------------------ */
+/* Mesh: topology and static classification                                                     */
+/* ------------------------------------------------------------------------------------------ */
+
+typedef struct el_mesh el_mesh;
+
+/* triangle_edges entry for a triangle side that is no real edge (diagonal inside an n-gon). */
+#define EL_NO_EDGE 0xFFFFFFFFu
+
+/* Host marks, per edge (el_mesh_desc.edge_marks). They are copied into the edge flags. */
+#define EL_MARK_SHARP     (1u << 16)
+#define EL_MARK_SEAM      (1u << 17)
+#define EL_MARK_FREESTYLE (1u << 18)
+#define EL_MARK_BEVEL     (1u << 19) /* set by the library too where edge_bevel_weights > 0 */
+#define EL_MARK_ALL       (EL_MARK_SHARP | EL_MARK_SEAM | EL_MARK_FREESTYLE | EL_MARK_BEVEL)
+
+/* Static edge flags (el_mesh_get_edge_flags). */
+#define EL_EDGE_LOOSE              (1u << 0)  /* no face (host edges only) */
+#define EL_EDGE_BORDER             (1u << 1)  /* exactly one face */
+#define EL_EDGE_MANIFOLD           (1u << 2)  /* exactly two faces */
+#define EL_EDGE_NON_MANIFOLD       (1u << 3)  /* three or more faces */
+#define EL_EDGE_CREASE             (1u << 4)  /* manifold, angle between normals > threshold */
+#define EL_EDGE_CONVEX             (1u << 5)  /* manifold, bends away from the outside */
+#define EL_EDGE_CONCAVE            (1u << 6)  /* manifold, bends towards the outside */
+#define EL_EDGE_DEGENERATE         (1u << 7)  /* zero length, or next to a zero-area face */
+#define EL_EDGE_MATERIAL_BOUNDARY  (1u << 8)  /* faces with different triangle_materials */
+#define EL_EDGE_FLIPPED_WINDING    (1u << 9)  /* manifold, both faces run the edge the same way */
+
+/* Everything the library needs to know about one mesh. Optional arrays may be NULL. */
+typedef struct el_mesh_desc {
+    const float* positions;          /* 3 * vertex_count */
+    uint32_t vertex_count;
+    const uint32_t* triangles;       /* 3 * triangle_count, may be 0 triangles if edges given */
+    uint32_t triangle_count;
+    /* Optional host topology (Blender has it): unique edges and triangle -> edge map. Side s of
+     * triangle t runs from corner s to corner (s+1)%3 and maps to triangle_edges[3t+s], which is
+     * an edge index or EL_NO_EDGE. Both or neither. */
+    const uint32_t* edges;           /* 2 * edge_count */
+    uint32_t edge_count;
+    const uint32_t* triangle_edges;  /* 3 * triangle_count */
+    /* Optional, only with host edges: EL_MARK_* bits per edge, and bevel weights in [0, 1]. */
+    const uint32_t* edge_marks;      /* edge_count */
+    const float* edge_bevel_weights; /* edge_count */
+    /* Optional: material slot per triangle (for material boundaries). */
+    const uint32_t* triangle_materials; /* triangle_count */
+    /* Optional: unit vertex normals (3 * vertex_count) for smooth contours; if NULL the library
+     * computes angle-weighted ones. */
+    const float* vertex_normals;
+} el_mesh_desc;
+
+/* Validates every input, builds edges and edge->face adjacency (or takes the host's), face
+ * normals, dihedral angles and convexity. Classifies creases at 30 degrees until
+ * el_mesh_classify is called. */
+EL_API el_status el_mesh_create(const el_mesh_desc* desc, el_mesh** out_mesh);
+EL_API void el_mesh_destroy(el_mesh* mesh);
+
+/* Crease threshold in degrees, in Blender's Auto Smooth / Smooth by Angle convention: an edge is
+ * a crease when the angle between its two face normals exceeds the threshold. Freestyle's crease
+ * angle is 180 minus this. Costs O(edges); nothing else is recomputed. */
+EL_API el_status el_mesh_classify(el_mesh* mesh, float crease_angle_deg);
+
+typedef struct el_mesh_info {
+    uint32_t vertex_count;
+    uint32_t triangle_count;
+    uint32_t edge_count;
+    uint32_t loose_edges;
+    uint32_t border_edges;
+    uint32_t manifold_edges;
+    uint32_t non_manifold_edges;
+    uint32_t crease_edges;
+    uint32_t convex_edges;
+    uint32_t concave_edges;
+    uint32_t marked_edges;            /* any EL_MARK_* bit */
+    uint32_t material_boundary_edges;
+    uint32_t flipped_winding_edges;
+    uint32_t degenerate_triangles;
+    uint32_t degenerate_edges;
+    uint32_t host_edges;              /* 1 if the host supplied edges */
+    float crease_angle_deg;
+} el_mesh_info;
+
+EL_API el_status el_mesh_get_info(const el_mesh* mesh, el_mesh_info* out_info);
+/* 2 vertex indices per edge. */
+EL_API el_status el_mesh_get_edges(const el_mesh* mesh, uint32_t* out, uint32_t capacity_edges);
+/* EL_EDGE_* | EL_MARK_* per edge. */
+EL_API el_status el_mesh_get_edge_flags(const el_mesh* mesh, uint32_t* out, uint32_t capacity_edges);
+/* Number of faces per edge. */
+EL_API el_status el_mesh_get_edge_face_counts(const el_mesh* mesh, uint32_t* out, uint32_t capacity_edges);
+/* 6 floats per edge: N1 xyz, N2 xyz (object space, unit). N1 is the normal of the face that runs
+ * the edge from its first to its second vertex (if any). Border edges: N2 = N1. Loose edges and
+ * edges whose faces are all degenerate: zero vectors. */
+EL_API el_status el_mesh_get_edge_normals(const el_mesh* mesh, float* out, uint32_t capacity_edges);
+/* Angle between the two face normals in degrees (0 flat, 90 cube edge); 0 for non-manifold. */
+EL_API el_status el_mesh_get_edge_angles(const el_mesh* mesh, float* out, uint32_t capacity_edges);
+/* 3 floats per triangle, unit, or zero for a degenerate triangle. */
+EL_API el_status el_mesh_get_face_normals(const el_mesh* mesh, float* out, uint32_t capacity_triangles);
+/* 1 per degenerate triangle, else 0. */
+EL_API el_status el_mesh_get_degenerate_triangles(const el_mesh* mesh, uint8_t* out, uint32_t capacity_triangles);
+/* Faces of one edge: writes up to capacity triangle indices and the total count. */
+EL_API el_status el_mesh_get_edge_faces(const el_mesh* mesh, uint32_t edge, uint32_t* out,
+                                        uint32_t capacity, uint32_t* out_count);
+/* Indices of edges whose flags contain all bits of `all_of` and any bit of `any_of` (0 = no
+ * constraint). Pass out = NULL to get only the count. */
+EL_API el_status el_mesh_select_edges(const el_mesh* mesh, uint32_t all_of, uint32_t any_of,
+                                      uint32_t* out, uint32_t capacity, uint32_t* out_count);
+
+/* ------------------------------------------------------------------------------------------ */
+/* View: silhouettes and smooth contours, cached per view                                       */
+/* ------------------------------------------------------------------------------------------ */
+
+typedef struct el_view el_view;
+
+typedef enum el_projection {
+    EL_PERSPECTIVE = 0,
+    EL_ORTHOGRAPHIC = 1
+} el_projection;
+
+typedef struct el_camera {
+    int32_t projection;        /* el_projection */
+    float eye[3];              /* world space, perspective */
+    float view_dir[3];         /* world space, orthographic: direction the camera looks along */
+    float object_to_world[16]; /* row-major, column vectors; must be invertible */
+} el_camera;
+
+/* What el_view_update computes. */
+#define EL_VIEW_SILHOUETTES (1u << 0)
+#define EL_VIEW_CONTOURS    (1u << 1)
+
+typedef struct el_view_stats {
+    uint64_t updates;          /* calls of el_view_update */
+    uint64_t cache_hits;       /* calls that found the same camera and did nothing */
+    uint64_t facing_passes;    /* per-face facing recomputations */
+    uint64_t faces_flipped;    /* faces whose facing changed, summed over updates */
+    uint64_t silhouette_rebuilds; /* edge lists rebuilt because a face flipped */
+    uint64_t contour_passes;   /* contour recomputations */
+    uint32_t silhouette_edges; /* current */
+    uint32_t contour_segments; /* current */
+} el_view_stats;
+
+EL_API el_status el_view_create(const el_mesh* mesh, el_view** out_view);
+EL_API void el_view_destroy(el_view* view);
+/* Recomputes what `what` asks for if the camera (or `what`) changed; an identical camera costs a
+ * comparison. *out_changed (optional) is 1 when the outputs changed, so the host re-uploads only
+ * then. */
+EL_API el_status el_view_update(el_view* view, const el_camera* camera, uint32_t what,
+                                uint32_t* out_changed);
+/* Manifold edges whose two faces face differently (front/back); ascending edge indices. */
+EL_API el_status el_view_get_silhouettes(const el_view* view, uint32_t* out, uint32_t capacity,
+                                         uint32_t* out_count);
+/* Per-face facing bit for the current camera (1 = front-facing). */
+EL_API el_status el_view_get_facing(const el_view* view, uint8_t* out, uint32_t capacity_triangles);
+/* Smooth contour segments (zero set of n.v, Hertzmann & Zorin): 6 floats per segment, two
+ * object-space endpoints; out_triangles (optional) gets the triangle of each segment. */
+EL_API el_status el_view_get_contours(const el_view* view, float* out_points,
+                                      uint32_t* out_triangles, uint32_t capacity_segments,
+                                      uint32_t* out_count);
+EL_API el_status el_view_get_stats(const el_view* view, el_view_stats* out_stats);
+
+/* ------------------------------------------------------------------------------------------ */
+/* Highlight math (docs/highlight_math.md)                                                      */
+/* ------------------------------------------------------------------------------------------ */
+
+typedef struct el_highlight_table el_highlight_table;
+
+typedef enum el_table_layout {
+    /* Seed 000's table: F(phi, m) at phi_count values of phi uniform on [0, pi/2] and the
+     * integers m = 1, 2, ..., m_count. Lookups between integer m interpolate linearly. */
+    EL_TABLE_PAPER = 0,
+    /* EdgeLight's: x = phi / phi_end(m) uniform on [0, 1] with phi_end(m) = min(pi/2, c/sqrt(m)),
+     * t = ln(m) / ln(m_max) uniform on [0, 1]; stores sqrt(m) * F. Covers any real m in
+     * [1, m_max]. */
+    EL_TABLE_WARPED = 1
+} el_table_layout;
+
+typedef struct el_table_desc {
+    int32_t layout;     /* el_table_layout */
+    uint32_t phi_count; /* samples along phi (texture width), >= 2 */
+    uint32_t m_count;   /* samples along the exponent (texture height), >= 2 */
+    float m_max;        /* WARPED: largest exponent covered (> 1); PAPER: ignored (= m_count) */
+} el_table_desc;
+
+typedef struct el_table_info {
+    int32_t layout;
+    uint32_t phi_count;
+    uint32_t m_count;
+    float m_max;
+    float warp_c;       /* WARPED: c in phi_end(m) = min(pi/2, c/sqrt(m)) */
+} el_table_info;
+
+EL_API el_status el_highlight_table_create(const el_table_desc* desc, el_highlight_table** out);
+EL_API void el_highlight_table_destroy(el_highlight_table* table);
+EL_API el_status el_highlight_table_get_info(const el_highlight_table* table, el_table_info* out);
+/* Row-major float32, m_count rows of phi_count texels: upload as an R32F texture of width
+ * phi_count and height m_count. */
+EL_API el_status el_highlight_table_copy(const el_highlight_table* table, float* out,
+                                         uint64_t capacity_floats);
+/* F(phi, m) = integral_0^phi cos^m(theta) dtheta through the table, float32, phi in
+ * [-pi/2, pi/2] (F is odd), m in the table's range. */
+EL_API el_status el_highlight_table_lookup(const el_highlight_table* table, float phi, float m,
+                                           float* out);
+
+/* Exact F(phi, m) in double (regularized incomplete beta), phi in [-pi/2, pi/2], m >= 0. */
+EL_API el_status el_cos_power_integral(double phi, double m, double* out);
+/* Closed-form part: integral_a^b cos^n(t) sin(t) dt = (cos^(n+1) a - cos^(n+1) b) / (n + 1),
+ * a, b in [-pi/2, pi/2]. */
+EL_API el_status el_cos_power_sin_integral(double a, double b, double n, double* out);
+/* Blend weight W = K * r_e / (d * r_max), clamped to [0, 1]. */
+EL_API el_status el_highlight_weight(float K, float r_e, float d, float r_max, float* out_w);
+
+/* One pixel's rounded edge: a cylinder of radius r_e around the edge line through `point` with
+ * direction `edge_dir`, its normals sweeping from n1 to n2 about the edge. Directions need not be
+ * unit. Light and half vectors are taken at `point`. */
+typedef struct el_highlight_input {
+    float point[3];     /* a point on the edge (world) */
+    float edge_dir[3];  /* edge direction */
+    float n1[3];        /* normal of the first face */
+    float n2[3];        /* normal of the second face */
+    float eye[3];       /* perspective: eye position */
+    float view_dir[3];  /* orthographic: direction the camera looks along */
+    int32_t projection; /* el_projection */
+    float light[3];     /* direction towards the light (sun), or light position (point) */
+    int32_t light_is_point;
+    float shininess;    /* Blinn exponent n >= 1 (real) */
+    float radius;       /* r_e, world units */
+    float K;            /* blend gain: W = K r_e / (d r_max); K = focal length in pixels gives
+                           true pixel coverage (docs/highlight_math.md) */
+    float ortho_scale;  /* orthographic: d used in W (world size that K pixels span) */
+} el_highlight_input;
+
+typedef struct el_highlight_result {
+    float specular;     /* I_s specular factor: mean of max(N.H,0)^n over the visible arc,
+                           weighted by projected width (in [0, 1]) */
+    float diffuse;      /* the same with max(N.L,0) */
+    float weight;       /* W, clamped to [0, 1]; 0 when nothing of the arc is visible */
+    float r_max;        /* 1 / |P.(Na - Nb)| over the visible arc; 0 when none is */
+    float visible_fraction; /* visible projected width / full projected width */
+} el_highlight_result;
+
+/* Float32 evaluation through the table: the same steps as shaders' edge_highlight pass. */
+EL_API el_status el_highlight_eval(const el_highlight_table* table, const el_highlight_input* in,
+                                   el_highlight_result* out);
+EL_API el_status el_highlight_eval_batch(const el_highlight_table* table,
+                                         const el_highlight_input* in, uint32_t count,
+                                         el_highlight_result* out);
+/* Double-precision reference: adaptive quadrature of the full arc integral in 3-D, no table, no
+ * closed form. For tests and benchmarks. */
+EL_API el_status el_highlight_reference(const el_highlight_input* in, el_highlight_result* out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* EDGELIGHT_EDGELIGHT_H */
