@@ -1,0 +1,34 @@
+#include "face_normals.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+
+namespace el {
+
+void compute_face_normals(const MeshData& mesh, Geometry& geom) {
+    const uint32_t n = mesh.triangle_count();
+    geom.face_normals.resize(n);
+    geom.face_offsets.resize(n);
+    geom.face_degenerate.resize(n);
+    for (uint32_t t = 0; t < n; ++t) {
+        // Double: float inputs make exact differences and products, so a triangle that is
+        // collinear in float gives a cross product of (nearly) exactly zero.
+        const glm::dvec3 a(mesh.positions[mesh.triangles[3 * t]]);
+        const glm::dvec3 b(mesh.positions[mesh.triangles[3 * t + 1]]);
+        const glm::dvec3 c(mesh.positions[mesh.triangles[3 * t + 2]]);
+        const glm::dvec3 e1 = b - a, e2 = c - a, e3 = c - b;
+        const glm::dvec3 cr = glm::cross(e1, e2);
+        const double len = glm::length(cr);
+        const double scale = std::max({glm::dot(e1, e1), glm::dot(e2, e2), glm::dot(e3, e3)});
+        // Relative to the longest side: below ~float epsilon the normal is noise.
+        const bool degenerate = !(len > 1e-7 * scale);
+        const glm::vec3 nrm = degenerate ? glm::vec3(0.0f) : glm::vec3(cr / len);
+        geom.face_normals[t] = nrm;
+        geom.face_offsets[t] = degenerate ? 0.0f : float(glm::dot(cr / len, a));
+        geom.face_degenerate[t] = degenerate ? 1 : 0;
+    }
+}
+
+}  // namespace el

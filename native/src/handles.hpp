@@ -1,0 +1,16 @@
+// What the opaque C handles are. A view holds its mesh's data by shared ownership, so the host
+// may destroy handles in any order.
+#pragma once
+
+#include "mesh_data.hpp"
+#include "view_cache.hpp"
+
+#include <memory>
+
+struct el_mesh {
+    std::shared_ptr<el::MeshData> data;
+};
+
+struct el_view {
+    el::ViewCache cache;
+};

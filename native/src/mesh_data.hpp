@@ -1,0 +1,55 @@
+// What the library knows about one mesh: inputs copied at create time, topology, geometry and
+// static classification. Built once by el_mesh_create; views share it read-only.
+#pragma once
+
+#include <edgelight/edgelight.h>
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace el {
+
+struct Topology {
+    std::vector<uint32_t> edge_vertices;     // 2 per edge
+    std::vector<uint32_t> triangle_edges;    // 3 per triangle, side s = corner s -> s+1; EL_NO_EDGE
+    std::vector<uint32_t> edge_face_offsets; // CSR: edge_count + 1
+    std::vector<uint32_t> edge_faces;        // triangle indices
+    bool host_edges = false;
+
+    uint32_t edge_count() const { return uint32_t(edge_vertices.size() / 2); }
+    uint32_t face_count(uint32_t e) const { return edge_face_offsets[e + 1] - edge_face_offsets[e]; }
+};
+
+struct Geometry {
+    std::vector<glm::vec3> face_normals;     // unit, or zero for degenerate faces
+    std::vector<float> face_offsets;         // dot(normal, first corner): plane of each face
+    std::vector<uint8_t> face_degenerate;
+    std::vector<glm::vec3> vertex_normals;   // unit (host's or angle-weighted), zero if undefined
+};
+
+struct Classification {
+    std::vector<uint32_t> edge_flags;        // EL_EDGE_* | EL_MARK_*, crease bit per threshold
+    std::vector<glm::vec3> n1, n2;           // the two face normals the highlight pass needs
+    std::vector<float> angle_deg;            // angle between n1 and n2
+    std::vector<uint32_t> face1, face2;      // the two faces of manifold edges (else EL_NO_EDGE)
+    float crease_angle_deg = 30.0f;
+};
+
+struct MeshData {
+    std::vector<glm::vec3> positions;
+    std::vector<uint32_t> triangles;         // 3 per triangle
+    std::vector<uint32_t> edge_marks;        // host marks per edge (empty if none)
+    std::vector<float> bevel_weights;        // per edge (empty if none)
+    std::vector<uint32_t> triangle_materials;// per triangle (empty if none)
+    Topology topo;
+    Geometry geom;
+    Classification cls;
+
+    uint32_t vertex_count() const { return uint32_t(positions.size()); }
+    uint32_t triangle_count() const { return uint32_t(triangles.size() / 3); }
+    uint32_t edge_count() const { return topo.edge_count(); }
+};
+
+}  // namespace el
