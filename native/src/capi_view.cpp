@@ -58,7 +58,7 @@ EL_API el_status el_view_get_facing(const el_view* view, uint8_t* out, uint32_t 
             el::fail(EL_ERR_INVALID_ARGUMENT, "no facing yet: call el_view_update with EL_VIEW_SILHOUETTES");
         const uint32_t n = c.mesh->triangle_count();
         require_capacity(capacity, n, "capacity_triangles");
-        for (uint32_t f = 0; f < n; ++f) out[f] = el::facing_bit(c.facing, f) ? 1 : 0;
+        std::copy(c.facing.begin(), c.facing.begin() + n, out);
     });
 }
 

@@ -88,6 +88,13 @@ void analyze_edges(const MeshData& m, Classification& cls) {
         }
         cls.edge_flags[e] = flags;
     }
+    cls.silhouette_candidates.clear();
+    cls.candidate_faces.clear();
+    for (uint32_t e = 0; e < edge_count; ++e)
+        if (cls.face1[e] != EL_NO_EDGE && !(cls.edge_flags[e] & EL_EDGE_DEGENERATE)) {
+            cls.silhouette_candidates.push_back(e);
+            cls.candidate_faces.push_back(uint64_t(cls.face1[e]) | uint64_t(cls.face2[e]) << 32);
+        }
 }
 
 void apply_crease_threshold(Classification& cls, float crease_angle_deg) {

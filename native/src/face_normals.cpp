@@ -29,6 +29,17 @@ void compute_face_normals(const MeshData& mesh, Geometry& geom) {
         geom.face_offsets[t] = degenerate ? 0.0f : float(glm::dot(cr / len, a));
         geom.face_degenerate[t] = degenerate ? 1 : 0;
     }
+    const size_t padded = (size_t(n) + 63) / 64 * 64;
+    geom.plane_x.assign(padded, 0.0f);
+    geom.plane_y.assign(padded, 0.0f);
+    geom.plane_z.assign(padded, 0.0f);
+    geom.plane_d.assign(padded, 0.0f);
+    for (uint32_t t = 0; t < n; ++t) {
+        geom.plane_x[t] = geom.face_normals[t].x;
+        geom.plane_y[t] = geom.face_normals[t].y;
+        geom.plane_z[t] = geom.face_normals[t].z;
+        geom.plane_d[t] = geom.face_offsets[t];
+    }
 }
 
 }  // namespace el

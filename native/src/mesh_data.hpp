@@ -25,6 +25,9 @@ struct Topology {
 struct Geometry {
     std::vector<glm::vec3> face_normals;     // unit, or zero for degenerate faces
     std::vector<float> face_offsets;         // dot(normal, first corner): plane of each face
+    // The same planes as structure-of-arrays, padded with zero planes to a multiple of 64 faces,
+    // so the facing pass runs 4 faces per SSE instruction and 16 per output store.
+    std::vector<float> plane_x, plane_y, plane_z, plane_d;
     std::vector<uint8_t> face_degenerate;
     std::vector<glm::vec3> vertex_normals;   // unit (host's or angle-weighted), zero if undefined
 };
@@ -34,6 +37,10 @@ struct Classification {
     std::vector<glm::vec3> n1, n2;           // the two face normals the highlight pass needs
     std::vector<float> angle_deg;            // angle between n1 and n2
     std::vector<uint32_t> face1, face2;      // the two faces of manifold edges (else EL_NO_EDGE)
+    // Edges that can be silhouettes (manifold, not degenerate) and their faces packed f1 | f2 << 32:
+    // one sequential stream for the per-view edge pass.
+    std::vector<uint32_t> silhouette_candidates;
+    std::vector<uint64_t> candidate_faces;
     float crease_angle_deg = 30.0f;
 };
 

@@ -1,38 +1,39 @@
 #include "topology.hpp"
 
-#include <algorithm>
 
 namespace el {
 
 namespace {
 
+// True when side s of triangle t maps to the same edge as an earlier side of t (only possible in
+// a triangle with a repeated corner): such a face is listed once per edge.
+bool repeats_earlier_side(const std::vector<uint32_t>& triangle_edges, size_t t, uint32_t s) {
+    const uint32_t e = triangle_edges[3 * t + s];
+    for (uint32_t k = 0; k < s; ++k)
+        if (triangle_edges[3 * t + k] == e) return true;
+    return false;
+}
+
 // Edge -> face CSR from a complete triangle -> edge map, by counting sort (faces ascending).
 void build_edge_faces(Topology& t, uint32_t triangle_count) {
     const uint32_t edge_count = t.edge_count();
-    t.edge_face_offsets.assign(size_t(edge_count) + 1, 0);
-    for (uint32_t e : t.triangle_edges)
-        if (e != EL_NO_EDGE) ++t.edge_face_offsets[e + 1];
-    for (uint32_t e = 0; e < edge_count; ++e) t.edge_face_offsets[e + 1] += t.edge_face_offsets[e];
-    t.edge_faces.resize(t.edge_face_offsets[edge_count]);
-    std::vector<uint32_t> cursor(t.edge_face_offsets.begin(), t.edge_face_offsets.end() - 1);
-    for (uint32_t tri = 0; tri < triangle_count; ++tri)
-        for (uint32_t side = 0; side < 3; ++side) {
-            const uint32_t e = t.triangle_edges[3 * tri + side];
-            // A degenerate triangle may use one edge on two sides: list the face once.
-            if (e == EL_NO_EDGE) continue;
-            const uint32_t begin = t.edge_face_offsets[e];
-            if (cursor[e] > begin && t.edge_faces[cursor[e] - 1] == tri) continue;
-            t.edge_faces[cursor[e]++] = tri;
+    std::vector<uint32_t>& offsets = t.edge_face_offsets;
+    offsets.assign(size_t(edge_count) + 1, 0);
+    for (size_t tri = 0; tri < triangle_count; ++tri)
+        for (uint32_t s = 0; s < 3; ++s) {
+            const uint32_t e = t.triangle_edges[3 * tri + s];
+            if (e != EL_NO_EDGE && !repeats_earlier_side(t.triangle_edges, tri, s)) ++offsets[e + 1];
         }
-    // Close the holes left by skipped duplicates.
-    uint32_t write = 0;
-    for (uint32_t e = 0; e < edge_count; ++e) {
-        const uint32_t begin = t.edge_face_offsets[e], end = cursor[e];
-        t.edge_face_offsets[e] = write;
-        for (uint32_t i = begin; i < end; ++i) t.edge_faces[write++] = t.edge_faces[i];
-    }
-    t.edge_face_offsets[edge_count] = write;
-    t.edge_faces.resize(write);
+    for (uint32_t e = 0; e < edge_count; ++e) offsets[e + 1] += offsets[e];
+    t.edge_faces.resize(offsets[edge_count]);
+    // Fill using offsets[e] as the cursor of edge e, then shift back by one slot.
+    for (size_t tri = 0; tri < triangle_count; ++tri)
+        for (uint32_t s = 0; s < 3; ++s) {
+            const uint32_t e = t.triangle_edges[3 * tri + s];
+            if (e != EL_NO_EDGE && !repeats_earlier_side(t.triangle_edges, tri, s)) t.edge_faces[offsets[e]++] = uint32_t(tri);
+        }
+    for (uint32_t e = edge_count; e > 0; --e) offsets[e] = offsets[e - 1];
+    offsets[0] = 0;
 }
 
 }  // namespace
@@ -40,41 +41,39 @@ void build_edge_faces(Topology& t, uint32_t triangle_count) {
 Topology build_topology(const uint32_t* tris, uint32_t triangle_count, uint32_t vertex_count) {
     Topology t;
     const size_t sides = size_t(triangle_count) * 3;
-    // Bucket every side by its lower vertex; a vertex has few edges, so each bucket is tiny and
-    // unique edges are found by a short linear scan (no hashing, no global sort).
-    std::vector<uint32_t> offsets(size_t(vertex_count) + 1, 0);
-    for (size_t i = 0; i < sides; ++i) {
-        const uint32_t a = tris[i], b = tris[i - i % 3 + (i % 3 + 1) % 3];
-        if (a != b) ++offsets[std::min(a, b) + 1];
-    }
-    for (uint32_t v = 0; v < vertex_count; ++v) offsets[v + 1] += offsets[v];
-    std::vector<uint32_t> bucket_hi(offsets[vertex_count]), bucket_side(offsets[vertex_count]);
-    {
-        std::vector<uint32_t> fill(offsets.begin(), offsets.end() - 1);
-        for (size_t i = 0; i < sides; ++i) {
-            const uint32_t a = tris[i], b = tris[i - i % 3 + (i % 3 + 1) % 3];
-            if (a == b) continue;
-            const uint32_t slot = fill[std::min(a, b)]++;
-            bucket_hi[slot] = std::max(a, b);
-            bucket_side[slot] = uint32_t(i);
+    // One pass over the sides: each vertex keeps a short linked list of the edges whose lower
+    // vertex it is, so a side finds its edge in a few steps (no hashing, no sort). Edges are
+    // numbered in order of first use, which keeps neighbouring edges close in memory.
+    std::vector<uint32_t> head(vertex_count, EL_NO_EDGE);
+    std::vector<uint32_t> next;
+    next.reserve(sides / 2 + 16);
+    t.edge_vertices.reserve(sides + 32);
+    t.triangle_edges.resize(sides);
+    for (size_t i = 0; i < sides; i += 3) {
+        const uint32_t c[3] = {tris[i], tris[i + 1], tris[i + 2]};
+        if (i + 8 < sides) {
+            // Scanned meshes jump around the vertex array: start the next triangle's loads now.
+            __builtin_prefetch(&head[tris[i + 6]]);
+            __builtin_prefetch(&head[tris[i + 7]]);
+            __builtin_prefetch(&head[tris[i + 8]]);
         }
-    }
-    t.triangle_edges.assign(sides, EL_NO_EDGE);
-    t.edge_vertices.reserve(sides);  // ~sides/2 for closed meshes; reserve the bound once
-    std::vector<uint32_t> bucket_edge(offsets[vertex_count]);
-    for (uint32_t v = 0; v < vertex_count; ++v) {
-        const uint32_t begin = offsets[v], end = offsets[v + 1];
-        for (uint32_t i = begin; i < end; ++i) {
-            uint32_t e = EL_NO_EDGE;
-            for (uint32_t j = begin; j < i; ++j)
-                if (bucket_hi[j] == bucket_hi[i]) { e = bucket_edge[j]; break; }
-            if (e == EL_NO_EDGE) {
-                e = t.edge_count();
-                t.edge_vertices.push_back(v);
-                t.edge_vertices.push_back(bucket_hi[i]);
+        for (uint32_t s = 0; s < 3; ++s) {
+            const uint32_t a = c[s], b = c[s == 2 ? 0 : s + 1];
+            if (a == b) {
+                t.triangle_edges[i + s] = EL_NO_EDGE;
+                continue;
             }
-            bucket_edge[i] = e;
-            t.triangle_edges[bucket_side[i]] = e;
+            const uint32_t lo = a < b ? a : b, hi = a < b ? b : a;
+            uint32_t e = head[lo];
+            while (e != EL_NO_EDGE && t.edge_vertices[2 * size_t(e) + 1] != hi) e = next[e];
+            if (e == EL_NO_EDGE) {
+                e = uint32_t(next.size());
+                next.push_back(head[lo]);
+                head[lo] = e;
+                t.edge_vertices.push_back(lo);
+                t.edge_vertices.push_back(hi);
+            }
+            t.triangle_edges[i + s] = e;
         }
     }
     t.edge_vertices.shrink_to_fit();

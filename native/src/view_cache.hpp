@@ -16,8 +16,8 @@ struct ViewCache {
     bool valid = false;
     ViewPoint view;
     uint32_t what = 0;
-    std::vector<uint64_t> facing;
-    std::vector<uint64_t> scratch;
+    std::vector<uint8_t> facing;
+    std::vector<uint8_t> scratch;
     std::vector<uint32_t> silhouettes;
     std::vector<float> contour_points;
     std::vector<uint32_t> contour_triangles;

@@ -1,0 +1,21 @@
+# Classic meshes from Debian's libcgal-demo (data.tar.gz), extracted once into the build tree
+# for tests, benchmarks and the main job. EDGELIGHT_MESH_DIR points at them.
+set(EDGELIGHT_CGAL_DATA "/usr/share/doc/libcgal-dev/data.tar.gz" CACHE FILEPATH "libcgal-demo data set")
+set(EDGELIGHT_MESH_DIR "${CMAKE_BINARY_DIR}/meshes")
+set(_el_meshes cow.off fandisk.off bunny00.off armadillo.off cube.off)
+if(EXISTS "${EDGELIGHT_CGAL_DATA}" AND NOT EXISTS "${EDGELIGHT_MESH_DIR}/armadillo.off")
+  file(MAKE_DIRECTORY "${EDGELIGHT_MESH_DIR}")
+  set(_members "")
+  foreach(m ${_el_meshes})
+    list(APPEND _members "data/meshes/${m}")
+  endforeach()
+  execute_process(
+    COMMAND tar xzf "${EDGELIGHT_CGAL_DATA}" --strip-components=2 -C "${EDGELIGHT_MESH_DIR}" ${_members}
+    RESULT_VARIABLE _rc)
+  if(NOT _rc EQUAL 0)
+    message(WARNING "could not extract sample meshes from ${EDGELIGHT_CGAL_DATA}")
+  endif()
+endif()
+if(NOT EXISTS "${EDGELIGHT_MESH_DIR}/cow.off")
+  message(WARNING "libcgal-demo meshes not found (apt-get install libcgal-demo): mesh tests will fail")
+endif()
