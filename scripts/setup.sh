@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs what EdgeLight needs from Debian's packages (idempotent: apt runs only when something
+# is missing). Needs root or sudo.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config
+  libglm-dev libassimp-dev nlohmann-json3-dev
+  libgtest-dev libbenchmark-dev
+  libcgal-demo          # classic meshes (cow, fandisk, bunny, armadillo) in data.tar.gz
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo_cmd apt-get update -qq
+  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
