@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
-# The README's main job. Until the Blender add-on lands, it shows what the native core sees in a
-# real mesh: edge statistics of libcgal-demo's fandisk as JSON, written to out/fandisk.json.
+# The README's main job: set up, build, install the add-on into an isolated Blender user
+# directory, and render the cube sample (seed 000's figure 3) headless with EdgeLight to a PNG.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
+sample="${1:-cube}"
 "$root/scripts/setup.sh"
-BUILD_DIR="$build" "$root/scripts/build.sh"
+BUILD_DIR="$build" "$root/scripts/build.sh" >/dev/null
+user_scripts="$(BUILD_DIR="$build" "$root/scripts/install_addon.sh")"
 mkdir -p "$root/out"
-"$build/native/tools/edgelight-info" "$build/meshes/fandisk.off" --crease 30 | tee "$root/out/fandisk.json"
-echo "main job: wrote $root/out/fandisk.json"
+BLENDER_USER_SCRIPTS="$user_scripts" blender -b --addons edgelight "$root/blend_samples/$sample.blend" \
+  -E EDGELIGHT -o "$root/out/${sample}_#" -F PNG -f 1 2>&1 | grep -E "^(Saved|Error|Warning)|EdgeLight" || true
+png="$root/out/${sample}_1.png"
+[ -f "$png" ] || { echo "main job: no image was written" >&2; exit 1; }
+echo "main job: wrote $png"

@@ -8,6 +8,8 @@ packages=(
   libglm-dev libassimp-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   libcgal-demo          # classic meshes (cow, fandisk, bunny, armadillo) in data.tar.gz
+  blender python3-numpy # Debian's Blender 3.4 (system Python 3.11) for the add-on
+  xvfb                  # the UI under xvfb-run for viewport tests
 )
 
 missing=()

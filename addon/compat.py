@@ -1,0 +1,127 @@
+"""Every difference between Blender versions the add-on meets (3.4 through 5.x) lives here.
+
+Nothing else in the add-on checks bpy.app.version or probes for an API.
+"""
+import bpy
+import numpy as np
+
+
+def _edge_attribute(mesh, name, dtype):
+    attr = mesh.attributes.get(name)
+    if attr is None or attr.domain != 'EDGE':
+        return None
+    out = np.empty(len(mesh.edges), dtype=dtype)
+    attr.data.foreach_get("value", out)
+    return out
+
+
+def _edge_property(mesh, prop, dtype):
+    if not hasattr(bpy.types.MeshEdge, "bl_rna") or prop not in bpy.types.MeshEdge.bl_rna.properties:
+        return None
+    out = np.empty(len(mesh.edges), dtype=dtype)
+    mesh.edges.foreach_get(prop, out)
+    return out
+
+
+def _edge_data(mesh, attribute, legacy, dtype):
+    # Attributes first (4.0+, and 5.0's freestyle_edge), legacy MeshEdge properties otherwise.
+    for get in (lambda: _edge_attribute(mesh, attribute, dtype), lambda: _edge_property(mesh, legacy, dtype)):
+        value = get()
+        if value is not None:
+            return value
+    return np.zeros(len(mesh.edges), dtype=dtype)
+
+
+def edge_sharp(mesh):
+    return _edge_data(mesh, "sharp_edge", "use_edge_sharp", bool)
+
+
+def edge_seam(mesh):
+    return _edge_data(mesh, ".uv_seam", "use_seam", bool)
+
+
+def edge_freestyle(mesh):
+    return _edge_data(mesh, "freestyle_edge", "use_freestyle_mark", bool)
+
+
+def edge_bevel_weight(mesh):
+    return _edge_data(mesh, "bevel_weight_edge", "bevel_weight", np.float32)
+
+
+def corner_normals(mesh):
+    """(loops, 3) float32 normals as Blender shades them (smooth, flat, sharp edges, custom)."""
+    out = np.empty(len(mesh.loops) * 3, dtype=np.float32)
+    if hasattr(mesh, "corner_normals"):  # 4.1+
+        mesh.corner_normals.foreach_get("vector", out)
+    else:
+        mesh.calc_normals_split()  # on the evaluated copy, never the user's mesh
+        mesh.loops.foreach_get("normal", out)
+    return out.reshape(-1, 3)
+
+
+def triangle_material_index(mesh):
+    tris = mesh.loop_triangles
+    out = np.empty(len(tris), dtype=np.int32)
+    if "material_index" in bpy.types.MeshLoopTriangle.bl_rna.properties:
+        tris.foreach_get("material_index", out)
+        return out
+    poly = np.empty(len(tris), dtype=np.int32)
+    tris.foreach_get("polygon_index", poly)
+    attr = mesh.attributes.get("material_index")
+    if attr is None:
+        return np.zeros(len(tris), dtype=np.int32)
+    per_poly = np.empty(len(mesh.polygons), dtype=np.int32)
+    attr.data.foreach_get("value", per_poly)
+    return per_poly[poly]
+
+
+def write_pass(render_pass, pixels):
+    """pixels: (h * w, 4) float32. Newer versions take a flat array, 3.4 a 2-D one."""
+    try:
+        render_pass.rect.foreach_set(pixels.reshape(-1))
+    except TypeError:
+        render_pass.rect.foreach_set(pixels.reshape(-1, 4))
+
+
+def read_pass(render_pass, width, height):
+    out = np.empty(width * height * 4, dtype=np.float32)
+    try:
+        render_pass.rect.foreach_get(out)
+    except TypeError:
+        out2 = np.empty((width * height, 4), dtype=np.float32)
+        render_pass.rect.foreach_get(out2)
+        out = out2.reshape(-1)
+    return out.reshape(height, width, 4)
+
+
+def eevee_engine_id():
+    items = bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items.keys()
+    for name in ("BLENDER_EEVEE_NEXT", "BLENDER_EEVEE"):
+        if name in items:
+            return name
+    return "BLENDER_EEVEE"
+
+
+def compat_panels():
+    """Built-in panels that list Blender's own engines and should show for EdgeLight too."""
+    panels = []
+    for name in dir(bpy.types):
+        cls = getattr(bpy.types, name)
+        engines = getattr(cls, "COMPAT_ENGINES", None)
+        if isinstance(engines, set) and ("BLENDER_RENDER" in engines or "BLENDER_WORKBENCH" in engines):
+            if name.startswith(("MATERIAL_PT_", "EEVEE_MATERIAL_PT_")):
+                continue  # our own material panel replaces these
+            panels.append(cls)
+    return panels
+
+
+def offscreen_texture(offscreen):
+    return offscreen.texture_color  # .color_texture is gone in 5.0
+
+
+def texture(size, fmt, data=None):
+    """GPUTexture with keyword arguments (keyword-only in 5.0)."""
+    import gpu
+    if data is None:
+        return gpu.types.GPUTexture(size, format=fmt)
+    return gpu.types.GPUTexture(size, format=fmt, data=data)

@@ -1,0 +1,76 @@
+"""What the passes need to know about a material, read once per frame."""
+from dataclasses import dataclass
+import math
+
+DEFAULT_COLOR = (0.8, 0.8, 0.8)
+
+
+@dataclass(frozen=True)
+class Shading:
+    base_color: tuple      # rgb, scene-linear
+    alpha: float
+    spec_color: tuple      # rgb F0
+    shininess: float       # Blinn exponent n
+    # edge highlight
+    enabled: bool
+    K: float
+    radius: float
+    tint: tuple
+    rules: frozenset       # {'ANGLE', 'SHARP', 'BEVEL'}
+    angle_deg: float
+
+
+def shininess_from_roughness(roughness):
+    """Blinn-Phong exponent matching a GGX/Beckmann roughness: n = 2 / alpha^2 - 2, alpha = r^2."""
+    alpha = max(roughness, 1e-3) ** 2
+    return min(max(2.0 / (alpha * alpha) - 2.0, 1.0), 10000.0)
+
+
+def _input(node, *names):
+    for name in names:
+        socket = node.inputs.get(name)
+        if socket is not None and hasattr(socket, "default_value"):
+            return socket.default_value
+    return None
+
+
+def _float(node, default, *names):
+    v = _input(node, *names)
+    return default if v is None else float(v)
+
+
+def _principled(material):
+    if not (material.use_nodes and material.node_tree):
+        return None
+    for node in material.node_tree.nodes:
+        if node.type == 'BSDF_PRINCIPLED':
+            return node
+    return None
+
+
+def shading_of(material):
+    """Shading for a material slot's material, or the default look when there is none."""
+    if material is None:
+        return Shading(DEFAULT_COLOR, 1.0, (0.04,) * 3, shininess_from_roughness(0.5),
+                       True, 1.0, 0.01, (1.0, 1.0, 1.0), frozenset({'ANGLE', 'SHARP', 'BEVEL'}), 30.0)
+    node = _principled(material)
+    if node is not None:
+        c = _input(node, "Base Color")
+        base = tuple(c[:3]) if c is not None else DEFAULT_COLOR
+        roughness = _float(node, 0.5, "Roughness")
+        metallic = _float(node, 0.0, "Metallic")
+        specular = _float(node, 0.5, "Specular", "Specular IOR Level")  # renamed in 4.0
+        alpha = _float(node, 1.0, "Alpha")
+    else:
+        base = tuple(material.diffuse_color[:3])
+        alpha = float(material.diffuse_color[3])
+        roughness = float(material.roughness)
+        metallic = float(material.metallic)
+        specular = float(material.specular_intensity)
+    f0 = 0.08 * specular
+    spec = tuple(f0 * (1.0 - metallic) + b * metallic for b in base)
+    albedo = tuple(b * (1.0 - metallic) for b in base)
+    s = material.edgelight
+    n = s.shininess if s.use_custom_shininess else shininess_from_roughness(roughness)
+    return Shading(albedo, alpha, spec, float(n), bool(s.enabled), float(s.K), float(s.radius),
+                   tuple(s.tint), frozenset(s.selection), math.degrees(s.angle))

@@ -1,0 +1,376 @@
+"""ctypes binding of libedgelight's C ABI (native/include/edgelight/edgelight.h).
+
+The only module that touches ctypes, and it imports no bpy: it can be used and tested in plain
+Python. Every call checks its status and raises NativeError with the library's message.
+"""
+import ctypes
+import os
+
+import numpy as np
+
+ABI_VERSION = 1
+
+# Edge flags and marks (edgelight.h).
+EDGE_LOOSE = 1 << 0
+EDGE_BORDER = 1 << 1
+EDGE_MANIFOLD = 1 << 2
+EDGE_NON_MANIFOLD = 1 << 3
+EDGE_CREASE = 1 << 4
+EDGE_CONVEX = 1 << 5
+EDGE_CONCAVE = 1 << 6
+EDGE_DEGENERATE = 1 << 7
+EDGE_MATERIAL_BOUNDARY = 1 << 8
+EDGE_FLIPPED_WINDING = 1 << 9
+MARK_SHARP = 1 << 16
+MARK_SEAM = 1 << 17
+MARK_FREESTYLE = 1 << 18
+MARK_BEVEL = 1 << 19
+NO_EDGE = 0xFFFFFFFF
+
+PERSPECTIVE = 0
+ORTHOGRAPHIC = 1
+VIEW_SILHOUETTES = 1 << 0
+VIEW_CONTOURS = 1 << 1
+
+TABLE_PAPER = 0
+TABLE_WARPED = 1
+
+_u32p = ctypes.POINTER(ctypes.c_uint32)
+_f32p = ctypes.POINTER(ctypes.c_float)
+_u8p = ctypes.POINTER(ctypes.c_uint8)
+
+
+class NativeError(RuntimeError):
+    """A failed library call: `status` is the el_status name, the message says what was wrong."""
+
+    def __init__(self, status, message):
+        super().__init__(f"{status}: {message}")
+        self.status = status
+        self.message = message
+
+
+class LibraryUnavailable(NativeError):
+    """The library is missing, unloadable, or of another ABI version."""
+
+
+class MeshDesc(ctypes.Structure):
+    _fields_ = [
+        ("positions", _f32p), ("vertex_count", ctypes.c_uint32),
+        ("triangles", _u32p), ("triangle_count", ctypes.c_uint32),
+        ("edges", _u32p), ("edge_count", ctypes.c_uint32),
+        ("triangle_edges", _u32p),
+        ("edge_marks", _u32p), ("edge_bevel_weights", _f32p),
+        ("triangle_materials", _u32p),
+        ("vertex_normals", _f32p),
+    ]
+
+
+class MeshInfo(ctypes.Structure):
+    _fields_ = [(name, ctypes.c_uint32) for name in (
+        "vertex_count", "triangle_count", "edge_count", "loose_edges", "border_edges",
+        "manifold_edges", "non_manifold_edges", "crease_edges", "convex_edges", "concave_edges",
+        "marked_edges", "material_boundary_edges", "flipped_winding_edges",
+        "degenerate_triangles", "degenerate_edges", "host_edges")] + [("crease_angle_deg", ctypes.c_float)]
+
+
+class Camera(ctypes.Structure):
+    _fields_ = [("projection", ctypes.c_int32), ("eye", ctypes.c_float * 3),
+                ("view_dir", ctypes.c_float * 3), ("object_to_world", ctypes.c_float * 16)]
+
+
+class ViewStats(ctypes.Structure):
+    _fields_ = [(name, ctypes.c_uint64) for name in (
+        "updates", "cache_hits", "facing_passes", "faces_flipped", "silhouette_rebuilds",
+        "contour_passes")] + [("silhouette_edges", ctypes.c_uint32), ("contour_segments", ctypes.c_uint32)]
+
+
+class TableDesc(ctypes.Structure):
+    _fields_ = [("layout", ctypes.c_int32), ("phi_count", ctypes.c_uint32),
+                ("m_count", ctypes.c_uint32), ("m_max", ctypes.c_float)]
+
+
+class TableInfo(ctypes.Structure):
+    _fields_ = [("layout", ctypes.c_int32), ("phi_count", ctypes.c_uint32),
+                ("m_count", ctypes.c_uint32), ("m_max", ctypes.c_float), ("warp_c", ctypes.c_float)]
+
+
+class HighlightInput(ctypes.Structure):
+    _fields_ = [("point", ctypes.c_float * 3), ("edge_dir", ctypes.c_float * 3),
+                ("n1", ctypes.c_float * 3), ("n2", ctypes.c_float * 3),
+                ("eye", ctypes.c_float * 3), ("view_dir", ctypes.c_float * 3),
+                ("projection", ctypes.c_int32), ("light", ctypes.c_float * 3),
+                ("light_is_point", ctypes.c_int32), ("shininess", ctypes.c_float),
+                ("radius", ctypes.c_float), ("K", ctypes.c_float), ("ortho_scale", ctypes.c_float)]
+
+
+class HighlightResult(ctypes.Structure):
+    _fields_ = [("specular", ctypes.c_float), ("diffuse", ctypes.c_float), ("weight", ctypes.c_float),
+                ("r_max", ctypes.c_float), ("visible_fraction", ctypes.c_float)]
+
+
+_P = ctypes.c_void_p
+_SIGNATURES = {
+    "el_mesh_create": [ctypes.POINTER(MeshDesc), ctypes.POINTER(_P)],
+    "el_mesh_classify": [_P, ctypes.c_float],
+    "el_mesh_get_info": [_P, ctypes.POINTER(MeshInfo)],
+    "el_mesh_get_edges": [_P, _u32p, ctypes.c_uint32],
+    "el_mesh_get_edge_flags": [_P, _u32p, ctypes.c_uint32],
+    "el_mesh_get_edge_face_counts": [_P, _u32p, ctypes.c_uint32],
+    "el_mesh_get_edge_normals": [_P, _f32p, ctypes.c_uint32],
+    "el_mesh_get_edge_angles": [_P, _f32p, ctypes.c_uint32],
+    "el_mesh_get_face_normals": [_P, _f32p, ctypes.c_uint32],
+    "el_mesh_get_degenerate_triangles": [_P, _u8p, ctypes.c_uint32],
+    "el_mesh_select_edges": [_P, ctypes.c_uint32, ctypes.c_uint32, _u32p, ctypes.c_uint32, _u32p],
+    "el_view_create": [_P, ctypes.POINTER(_P)],
+    "el_view_update": [_P, ctypes.POINTER(Camera), ctypes.c_uint32, _u32p],
+    "el_view_get_silhouettes": [_P, _u32p, ctypes.c_uint32, _u32p],
+    "el_view_get_contours": [_P, _f32p, _u32p, ctypes.c_uint32, _u32p],
+    "el_view_get_stats": [_P, ctypes.POINTER(ViewStats)],
+    "el_highlight_table_create": [ctypes.POINTER(TableDesc), ctypes.POINTER(_P)],
+    "el_highlight_table_get_info": [_P, ctypes.POINTER(TableInfo)],
+    "el_highlight_table_copy": [_P, _f32p, ctypes.c_uint64],
+    "el_highlight_eval_batch": [_P, ctypes.POINTER(HighlightInput), ctypes.c_uint32, ctypes.POINTER(HighlightResult)],
+    "el_highlight_reference": [ctypes.POINTER(HighlightInput), ctypes.POINTER(HighlightResult)],
+}
+_DESTROY = ("el_mesh_destroy", "el_view_destroy", "el_highlight_table_destroy")
+
+
+def default_library_path():
+    """EDGELIGHT_LIBRARY, else libedgelight.so beside this file (the packaged add-on's layout)."""
+    return os.environ.get("EDGELIGHT_LIBRARY") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "libedgelight.so")
+
+
+class Library:
+    """The loaded shared library with its C signatures declared; refuses another ABI version."""
+
+    def __init__(self, path=None):
+        path = path or default_library_path()
+        try:
+            lib = ctypes.CDLL(path)
+        except OSError as e:
+            raise LibraryUnavailable("EL_LIBRARY_MISSING", f"cannot load {path}: {e}") from None
+        try:
+            lib.el_abi_version.restype = ctypes.c_uint32
+            version = lib.el_abi_version()
+        except AttributeError:
+            raise LibraryUnavailable("EL_ABI_MISMATCH", f"{path} is not libedgelight (no el_abi_version)") from None
+        if version != ABI_VERSION:
+            raise LibraryUnavailable("EL_ABI_MISMATCH", f"{path} has ABI version {version}, this add-on needs {ABI_VERSION}")
+        lib.el_last_error.restype = ctypes.c_char_p
+        lib.el_status_name.restype = ctypes.c_char_p
+        lib.el_status_name.argtypes = [ctypes.c_int]
+        for name, args in _SIGNATURES.items():
+            fn = getattr(lib, name)
+            fn.argtypes = args
+            fn.restype = ctypes.c_int
+        for name in _DESTROY:
+            getattr(lib, name).argtypes = [_P]
+            getattr(lib, name).restype = None
+        self.lib = lib
+        self.path = path
+
+    def call(self, name, *args):
+        status = getattr(self.lib, name)(*args)
+        if status != 0:
+            raise NativeError(self.lib.el_status_name(status).decode(), self.lib.el_last_error().decode())
+
+
+_loaded = {}
+
+
+def load(path=None):
+    """The library at `path` (default_library_path()), loaded once per path."""
+    path = path or default_library_path()
+    if path not in _loaded:
+        _loaded[path] = Library(path)
+    return _loaded[path]
+
+
+def _ptr(array, ctype):
+    return array.ctypes.data_as(ctypes.POINTER(ctype)) if array is not None else None
+
+
+def _contiguous(array, dtype, columns=None):
+    if array is None:
+        return None
+    a = np.ascontiguousarray(array, dtype=dtype)
+    return a.reshape(-1, columns) if columns else a.reshape(-1)
+
+
+class _Handle:
+    _destroy = ""
+    _h = None  # stays None when the constructor fails, so __del__ has nothing to free
+
+    def __init__(self, lib, handle):
+        self._lib = lib
+        self._h = handle
+
+    def close(self):
+        if self._h:
+            getattr(self._lib.lib, self._destroy)(self._h)
+            self._h = None
+
+    def __del__(self):
+        self.close()
+
+
+class Mesh(_Handle):
+    """A mesh's topology and static edge classification (el_mesh)."""
+    _destroy = "el_mesh_destroy"
+
+    def __init__(self, positions, triangles, *, edges=None, triangle_edges=None, edge_marks=None,
+                 bevel_weights=None, triangle_materials=None, vertex_normals=None, lib=None):
+        lib = lib or load()
+        keep = {
+            "positions": _contiguous(positions, np.float32, 3),
+            "triangles": _contiguous(triangles, np.uint32, 3) if triangles is not None else np.zeros((0, 3), np.uint32),
+            "edges": _contiguous(edges, np.uint32, 2),
+            "triangle_edges": _contiguous(triangle_edges, np.uint32, 3),
+            "edge_marks": _contiguous(edge_marks, np.uint32),
+            "bevel_weights": _contiguous(bevel_weights, np.float32),
+            "triangle_materials": _contiguous(triangle_materials, np.uint32),
+            "vertex_normals": _contiguous(vertex_normals, np.float32, 3),
+        }
+        d = MeshDesc()
+        d.positions = _ptr(keep["positions"], ctypes.c_float)
+        d.vertex_count = len(keep["positions"])
+        d.triangles = _ptr(keep["triangles"], ctypes.c_uint32) if len(keep["triangles"]) else None
+        d.triangle_count = len(keep["triangles"])
+        if keep["edges"] is not None:
+            d.edges = _ptr(keep["edges"], ctypes.c_uint32)
+            d.edge_count = len(keep["edges"])
+            d.triangle_edges = _ptr(keep["triangle_edges"], ctypes.c_uint32) if d.triangle_count else None
+        d.edge_marks = _ptr(keep["edge_marks"], ctypes.c_uint32)
+        d.edge_bevel_weights = _ptr(keep["bevel_weights"], ctypes.c_float)
+        d.triangle_materials = _ptr(keep["triangle_materials"], ctypes.c_uint32)
+        d.vertex_normals = _ptr(keep["vertex_normals"], ctypes.c_float)
+        handle = _P()
+        lib.call("el_mesh_create", ctypes.byref(d), ctypes.byref(handle))
+        super().__init__(lib, handle)
+
+    def classify(self, crease_angle_deg):
+        self._lib.call("el_mesh_classify", self._h, float(crease_angle_deg))
+
+    def info(self):
+        i = MeshInfo()
+        self._lib.call("el_mesh_get_info", self._h, ctypes.byref(i))
+        return {name: getattr(i, name) for name, _ in MeshInfo._fields_}
+
+    def _per_edge(self, fn, dtype, columns):
+        n = self.info()["edge_count"]
+        out = np.empty((n, columns) if columns > 1 else n, dtype=dtype)
+        self._lib.call(fn, self._h, _ptr(out, np.ctypeslib.as_ctypes_type(dtype)), n)
+        return out
+
+    def edges(self):
+        return self._per_edge("el_mesh_get_edges", np.uint32, 2)
+
+    def edge_flags(self):
+        return self._per_edge("el_mesh_get_edge_flags", np.uint32, 1)
+
+    def edge_normals(self):
+        """(E, 6): N1 xyz, N2 xyz per edge."""
+        return self._per_edge("el_mesh_get_edge_normals", np.float32, 6)
+
+    def edge_angles(self):
+        return self._per_edge("el_mesh_get_edge_angles", np.float32, 1)
+
+    def select_edges(self, all_of=0, any_of=0):
+        count = ctypes.c_uint32()
+        self._lib.call("el_mesh_select_edges", self._h, all_of, any_of, None, 0, ctypes.byref(count))
+        out = np.empty(count.value, dtype=np.uint32)
+        if count.value:
+            self._lib.call("el_mesh_select_edges", self._h, all_of, any_of, _ptr(out, ctypes.c_uint32), count.value, ctypes.byref(count))
+        return out
+
+
+def make_camera(*, object_to_world, eye=None, view_dir=None):
+    """An el_camera: perspective from `eye`, or orthographic along `view_dir` (world space)."""
+    c = Camera()
+    m = np.asarray(object_to_world, dtype=np.float32).reshape(4, 4)
+    c.object_to_world[:] = m.ravel().tolist()  # row-major, column vectors: numpy's Matrix layout
+    if eye is not None:
+        c.projection = PERSPECTIVE
+        c.eye[:] = [float(v) for v in eye]
+    else:
+        c.projection = ORTHOGRAPHIC
+        c.view_dir[:] = [float(v) for v in view_dir]
+    return c
+
+
+class View(_Handle):
+    """Per-view silhouettes and contours of one mesh, cached on the camera (el_view)."""
+    _destroy = "el_view_destroy"
+
+    def __init__(self, mesh):
+        handle = _P()
+        mesh._lib.call("el_view_create", mesh._h, ctypes.byref(handle))
+        super().__init__(mesh._lib, handle)
+        self.mesh = mesh
+
+    def update(self, camera, what=VIEW_SILHOUETTES | VIEW_CONTOURS):
+        """Returns True when the outputs changed (so the caller re-uploads only then)."""
+        changed = ctypes.c_uint32()
+        self._lib.call("el_view_update", self._h, ctypes.byref(camera), what, ctypes.byref(changed))
+        return bool(changed.value)
+
+    def silhouettes(self):
+        count = ctypes.c_uint32()
+        self._lib.call("el_view_get_silhouettes", self._h, None, 0, ctypes.byref(count))
+        out = np.empty(count.value, dtype=np.uint32)
+        self._lib.call("el_view_get_silhouettes", self._h, _ptr(out, ctypes.c_uint32), count.value, ctypes.byref(count))
+        return out
+
+    def contours(self):
+        """(S, 2, 3) object-space segment endpoints and (S,) triangles."""
+        count = ctypes.c_uint32()
+        self._lib.call("el_view_get_contours", self._h, None, None, 0, ctypes.byref(count))
+        pts = np.empty((count.value, 2, 3), dtype=np.float32)
+        tris = np.empty(count.value, dtype=np.uint32)
+        self._lib.call("el_view_get_contours", self._h, _ptr(pts, ctypes.c_float), _ptr(tris, ctypes.c_uint32), count.value, ctypes.byref(count))
+        return pts, tris
+
+    def stats(self):
+        s = ViewStats()
+        self._lib.call("el_view_get_stats", self._h, ctypes.byref(s))
+        return {name: getattr(s, name) for name, _ in ViewStats._fields_}
+
+
+class HighlightTable(_Handle):
+    """The F(phi, m) table (el_highlight_table), ready to upload as an R32F texture."""
+    _destroy = "el_highlight_table_destroy"
+
+    def __init__(self, layout=TABLE_WARPED, phi_count=256, m_count=64, m_max=16384.0, lib=None):
+        lib = lib or load()
+        d = TableDesc(layout, phi_count, m_count, m_max)
+        handle = _P()
+        lib.call("el_highlight_table_create", ctypes.byref(d), ctypes.byref(handle))
+        super().__init__(lib, handle)
+
+    def info(self):
+        i = TableInfo()
+        self._lib.call("el_highlight_table_get_info", self._h, ctypes.byref(i))
+        return {name: getattr(i, name) for name, _ in TableInfo._fields_}
+
+    def data(self):
+        """(m_count, phi_count) float32, row-major."""
+        i = self.info()
+        out = np.empty((i["m_count"], i["phi_count"]), dtype=np.float32)
+        self._lib.call("el_highlight_table_copy", self._h, _ptr(out, ctypes.c_float), out.size)
+        return out
+
+    def evaluate(self, inputs):
+        """Float32 path for an array of HighlightInput; returns an array of HighlightResult."""
+        n = len(inputs)
+        arr_in = (HighlightInput * n)(*inputs)
+        arr_out = (HighlightResult * n)()
+        self._lib.call("el_highlight_eval_batch", self._h, arr_in, n, arr_out)
+        return arr_out
+
+
+def highlight_reference(inp, lib=None):
+    """Double-precision reference for one HighlightInput."""
+    lib = lib or load()
+    out = HighlightResult()
+    lib.call("el_highlight_reference", ctypes.byref(inp), ctypes.byref(out))
+    return out

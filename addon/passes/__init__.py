@@ -1,0 +1,1 @@
+"""GPU passes: surface, edge highlight, composite. Drawing only; nothing here classifies."""

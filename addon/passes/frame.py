@@ -1,0 +1,220 @@
+"""One frame: surface -> edge highlight -> composite, accumulated over jittered samples.
+
+The same code serves the final render and (later) the viewport; only the camera, the size and
+where the result goes differ.
+"""
+from dataclasses import dataclass
+
+import gpu
+import numpy as np
+
+from .. import compat
+from . import batches, shader_lib, table
+
+MAX_LIGHTS = 16
+
+
+@dataclass
+class Camera:
+    view: np.ndarray          # world -> view, 4x4 row-major
+    projection: np.ndarray    # view -> clip, 4x4 row-major
+    eye: tuple
+    view_dir: tuple           # direction the camera looks along
+    orthographic: bool
+    width: int
+    height: int
+
+    @property
+    def px_per_unit(self):
+        """Pixels per world unit at distance 1 (perspective) or anywhere (orthographic)."""
+        return float(self.projection[0, 0]) * self.width / 2.0
+
+
+def halton(i, base):
+    f, r = 1.0, 0.0
+    while i > 0:
+        f /= base
+        r += f * (i % base)
+        i //= base
+    return r
+
+
+def jitter(sample):
+    """Sub-pixel offset of a sample; sample 0 is the pixel centre, so one sample is exact."""
+    if sample == 0:
+        return 0.0, 0.0
+    return halton(sample, 2) - 0.5, halton(sample, 3) - 0.5
+
+
+def jittered_projection(projection, width, height, dx, dy):
+    t = np.eye(4, dtype=np.float64)
+    t[0, 3] = 2.0 * dx / width
+    t[1, 3] = 2.0 * dy / height
+    return t @ projection
+
+
+def _mat(m):
+    """numpy row-major 4x4 -> std140 column-major floats."""
+    return np.asarray(m, dtype=np.float32).T.reshape(-1)
+
+
+def frame_data(camera, projection, scene):
+    lights = scene.lights[:MAX_LIGHTS]
+    color = np.zeros((MAX_LIGHTS, 4), np.float32)
+    position = np.zeros((MAX_LIGHTS, 4), np.float32)
+    direction = np.zeros((MAX_LIGHTS, 4), np.float32)
+    spot = np.zeros((MAX_LIGHTS, 4), np.float32)
+    for i, light in enumerate(lights):
+        color[i] = (*light.color, light.kind)
+        position[i, :3] = light.position
+        direction[i] = (*light.direction, light.spot_cos)
+        spot[i, 0] = light.spot_blend
+    head = np.concatenate([
+        _mat(camera.view), _mat(projection),
+        np.array([*camera.eye, 0.0 if camera.orthographic else 1.0], np.float32),
+        np.array([*camera.view_dir, 0.0], np.float32),
+        np.array([camera.width, camera.height, 1.0 / camera.width, 1.0 / camera.height], np.float32),
+        np.array([*scene.ambient, 1.0], np.float32),
+        np.array([camera.px_per_unit, len(lights), 0.0, 0.0], np.float32),
+    ])
+    return np.concatenate([head, color.ravel(), position.ravel(), direction.ravel(), spot.ravel()])
+
+
+class Targets:
+    """Float render targets of one size, reused across samples and frames."""
+
+    def __init__(self, width, height):
+        self.size = (width, height)
+        self.surface_color = compat.texture((width, height), 'RGBA32F')
+        self.surface_depth = compat.texture((width, height), 'R32F')  # 1 / view depth; 0 = empty
+        self.depth = compat.texture((width, height), 'DEPTH_COMPONENT32F')
+        self.highlight = compat.texture((width, height), 'RGBA32F')
+        self.result = compat.texture((width, height), 'RGBA32F')
+        self.surface_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.surface_color, self.surface_depth))
+        self.highlight_fb = gpu.types.GPUFrameBuffer(color_slots=(self.highlight,))
+        self.result_fb = gpu.types.GPUFrameBuffer(color_slots=(self.result,))
+
+
+@dataclass
+class Settings:
+    samples: int = 8
+    highlights: bool = True
+    transparent: bool = False
+
+
+@dataclass
+class Stats:
+    objects: int = 0
+    edges_drawn: int = 0
+    samples: int = 0
+
+
+def _shading_uniforms(shader, s):
+    shader.uniform_float("base_color", (*s.base_color, s.alpha))
+    shader.uniform_float("spec_color", (*s.spec_color, s.shininess))
+
+
+def draw_surface(targets, scene, gpu_meshes, ubo):
+    shader = shader_lib.get("surface")
+    with targets.surface_fb.bind():
+        targets.surface_fb.clear(color=(0.0, 0.0, 0.0, 0.0), depth=1.0)
+        gpu.state.depth_test_set('LESS_EQUAL')
+        gpu.state.depth_mask_set(True)
+        gpu.state.blend_set('NONE')
+        gpu.state.face_culling_set('NONE')
+        shader.bind()
+        shader.uniform_block("frame", ubo)
+        for inst in scene.instances:
+            gm = gpu_meshes[id(inst.mesh)]
+            shader.uniform_float("model", _mat(inst.matrix))
+            for slot, batch in gm.surface.items():
+                _shading_uniforms(shader, gm.extract.slot_shading[slot])
+                batch.draw(shader)
+        gpu.state.depth_test_set('NONE')
+        gpu.state.depth_mask_set(False)
+
+
+def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
+    tex, params = table.table()
+    shader = shader_lib.get("edge_highlight")
+    with targets.highlight_fb.bind():
+        targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
+        gpu.state.blend_set('ALPHA_PREMULT')
+        shader.bind()
+        shader.uniform_block("frame", ubo)
+        shader.uniform_sampler("cos_power_table", tex)
+        shader.uniform_sampler("surface_depth", targets.surface_depth)
+        shader.uniform_float("table_params", params)
+        for inst in scene.instances:
+            gm = gpu_meshes[id(inst.mesh)]
+            if not gm.edges:
+                continue
+            shader.uniform_float("model", _mat(inst.matrix))
+            for slot, batch in gm.edges.items():
+                s = gm.extract.slot_shading[slot]
+                _shading_uniforms(shader, s)
+                shader.uniform_float("tint", (*s.tint, s.K))
+                batch.draw(shader)
+                stats.edges_drawn += len(gm.extract.edges[slot])
+        gpu.state.blend_set('NONE')
+
+
+def draw_composite(targets, background, full_screen):
+    shader = shader_lib.get("composite")
+    with targets.result_fb.bind():
+        targets.result_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
+        shader.bind()
+        shader.uniform_sampler("surface_color", targets.surface_color)
+        shader.uniform_sampler("highlight_color", targets.highlight)
+        shader.uniform_float("background", background)
+        full_screen.draw(shader)
+
+
+def read(texture, width, height):
+    buf = gpu.types.Buffer('FLOAT', width * height * 4)
+    fb = gpu.types.GPUFrameBuffer(color_slots=(texture,))
+    with fb.bind():
+        fb.read_color(0, 0, width, height, 4, 0, 'FLOAT', data=buf)
+    return np.asarray(buf, dtype=np.float32).reshape(height, width, 4)
+
+
+def render(scene, camera, settings, targets=None, gpu_meshes=None, progress=None, cancelled=None, keep=None):
+    """Draws `scene` from `camera`; returns ((h, w, 4) scene-linear float RGBA, Stats).
+
+    progress(fraction) and cancelled() are called between samples; `keep`, when a dict, receives
+    the last sample's surface, highlight and result buffers for inspection.
+    """
+    w, h = camera.width, camera.height
+    targets = targets or Targets(w, h)
+    if gpu_meshes is None:
+        gpu_meshes = {}
+        for inst in scene.instances:
+            if id(inst.mesh) not in gpu_meshes:
+                gpu_meshes[id(inst.mesh)] = batches.GpuMesh(inst.mesh)
+    full_screen = batches.fullscreen_batch()
+    background = (*scene.ambient, 0.0 if settings.transparent else 1.0)
+    stats = Stats(objects=len(scene.instances))
+    acc = np.zeros((h, w, 4), np.float64)
+    samples = max(1, int(settings.samples))
+    for s in range(samples):
+        if cancelled and cancelled():
+            break
+        projection = jittered_projection(np.asarray(camera.projection, np.float64), w, h, *jitter(s))
+        data = frame_data(camera, projection, scene)
+        ubo = gpu.types.GPUUniformBuf(gpu.types.Buffer('FLOAT', data.size, data))
+        draw_surface(targets, scene, gpu_meshes, ubo)
+        if settings.highlights:
+            draw_highlights(targets, scene, gpu_meshes, ubo, stats)
+        else:
+            with targets.highlight_fb.bind():
+                targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
+        draw_composite(targets, background, full_screen)
+        acc += read(targets.result, w, h)
+        stats.samples += 1
+        if progress:
+            progress((s + 1) / samples)
+    if keep is not None:
+        keep["surface"] = read(targets.surface_color, w, h)
+        keep["highlight"] = read(targets.highlight, w, h)
+        keep["depth"] = read(targets.surface_depth, w, h)
+    return (acc / max(stats.samples, 1)).astype(np.float32), stats

@@ -1,0 +1,240 @@
+"""Evaluated depsgraph -> plain arrays the passes draw: meshes, chosen edges, lights, world.
+
+Reads with foreach_get into numpy; hands topology to the native library for classification.
+Never draws, never modifies the user's data (evaluated meshes are temporary copies).
+"""
+from dataclasses import dataclass, field
+import math
+
+import numpy as np
+
+from . import compat, native
+from .materials import shading_of
+
+GEOMETRY_TYPES = {'MESH', 'CURVE', 'SURFACE', 'FONT', 'META'}
+
+
+@dataclass
+class EdgeSet:
+    """Chosen edges of one material slot, object space."""
+    p0: np.ndarray
+    p1: np.ndarray
+    n1: np.ndarray
+    n2: np.ndarray
+    radius: np.ndarray
+
+    def __len__(self):
+        return len(self.radius)
+
+
+@dataclass
+class MeshExtract:
+    name: str
+    corner_pos: np.ndarray            # (3T, 3) surface vertices, non-indexed
+    corner_nor: np.ndarray            # (3T, 3) Blender's corner normals
+    slot_triangles: dict              # slot -> triangle indices
+    slot_shading: list                # slot -> materials.Shading
+    edges: dict = field(default_factory=dict)  # slot -> EdgeSet
+    info: dict = field(default_factory=dict)
+
+
+@dataclass
+class Light:
+    kind: int                          # 0 sun, 1 point, 2 spot, 3 area
+    color: tuple                       # colour x strength
+    position: tuple
+    direction: tuple                   # where the light points
+    spot_cos: float = -1.0
+    spot_blend: float = 0.0
+
+
+@dataclass
+class Instance:
+    mesh: MeshExtract
+    matrix: np.ndarray                 # object -> world, 4x4 row-major
+
+
+@dataclass
+class SceneData:
+    instances: list
+    lights: list
+    ambient: tuple
+    reports: list                      # what was skipped and why
+
+
+class SkipObject(Exception):
+    """This object cannot be drawn; the message says why. The render goes on."""
+
+
+def _foreach(collection, prop, dtype, width=1):
+    out = np.empty(len(collection) * width, dtype=dtype)
+    collection.foreach_get(prop, out)
+    return out.reshape(-1, width) if width > 1 else out
+
+
+def triangle_edge_map(mesh, tri_loops):
+    """Loop triangle side s (corner s -> s+1) -> Blender edge, or NO_EDGE for n-gon diagonals."""
+    loop_edge = _foreach(mesh.loops, "edge_index", np.uint32)
+    start = _foreach(mesh.polygons, "loop_start", np.int64)
+    total = _foreach(mesh.polygons, "loop_total", np.int64)
+    poly_of_loop = np.repeat(np.arange(len(start)), total)
+    loops = np.arange(len(loop_edge))
+    end = start[poly_of_loop] + total[poly_of_loop]
+    next_loop = np.where(loops + 1 < end, loops + 1, start[poly_of_loop])
+    out = np.empty(tri_loops.shape, dtype=np.uint32)
+    for s in range(3):
+        a, b = tri_loops[:, s], tri_loops[:, (s + 1) % 3]
+        out[:, s] = np.where(next_loop[a] == b, loop_edge[a], native.NO_EDGE)
+    return out
+
+
+def _first_two_faces(tri_edges, edge_count):
+    """For each edge the first two triangles that use it (-1 where none)."""
+    sides = tri_edges.reshape(-1).astype(np.int64)
+    faces = np.repeat(np.arange(len(tri_edges)), 3)
+    keep = sides != native.NO_EDGE
+    sides, faces = sides[keep], faces[keep]
+    order = np.argsort(sides, kind="stable")
+    sides, faces = sides[order], faces[order]
+    first = np.full(edge_count, -1, np.int64)
+    second = np.full(edge_count, -1, np.int64)
+    starts = np.flatnonzero(np.r_[True, sides[1:] != sides[:-1]]) if len(sides) else np.array([], np.int64)
+    first[sides[starts]] = faces[starts]
+    nxt = starts + 1
+    ok = nxt < len(sides)
+    nxt, st = nxt[ok], starts[ok]
+    same = sides[nxt] == sides[st]
+    second[sides[st[same]]] = faces[nxt[same]]
+    return first, second
+
+
+def extract_mesh(name, mesh, materials, lib=None):
+    """Arrays and chosen edges of an evaluated mesh. Raises SkipObject with a reason."""
+    mesh.calc_loop_triangles()
+    tri_count = len(mesh.loop_triangles)
+    if tri_count == 0:
+        raise SkipObject(f"{name}: no faces ({len(mesh.edges)} loose edges), nothing to shade")
+    positions = _foreach(mesh.vertices, "co", np.float32, 3)
+    tri_verts = _foreach(mesh.loop_triangles, "vertices", np.uint32, 3)
+    tri_loops = _foreach(mesh.loop_triangles, "loops", np.int64, 3)
+    edges = _foreach(mesh.edges, "vertices", np.uint32, 2)
+    tri_edges = triangle_edge_map(mesh, tri_loops)
+    tri_slot = np.clip(compat.triangle_material_index(mesh), 0, max(len(materials) - 1, 0))
+    sharp = compat.edge_sharp(mesh)
+    marks = (sharp.astype(np.uint32) * native.MARK_SHARP
+             | compat.edge_seam(mesh).astype(np.uint32) * native.MARK_SEAM
+             | compat.edge_freestyle(mesh).astype(np.uint32) * native.MARK_FREESTYLE)
+    bevel = np.clip(compat.edge_bevel_weight(mesh), 0.0, 1.0).astype(np.float32)
+    try:
+        m = native.Mesh(positions, tri_verts, edges=edges, triangle_edges=tri_edges, edge_marks=marks,
+                        bevel_weights=bevel, triangle_materials=tri_slot.astype(np.uint32), lib=lib)
+    except native.NativeError as e:
+        raise SkipObject(f"{name}: {e.message}") from None
+    info = m.info()
+    corner_nor = compat.corner_normals(mesh)[tri_loops.reshape(-1)]
+    shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
+    order = np.argsort(tri_slot, kind="stable")
+    slot_triangles = {int(s): order[tri_slot[order] == s] for s in np.unique(tri_slot)}
+    out = MeshExtract(name, positions[tri_verts.reshape(-1)], np.ascontiguousarray(corner_nor, np.float32),
+                      slot_triangles, shading, info=info)
+    out.edges = choose_edges(m, edges, positions, tri_edges, tri_slot, shading, sharp, bevel)
+    if info["degenerate_triangles"]:
+        out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
+    return out
+
+
+def choose_edges(m, edges, positions, tri_edges, tri_slot, shading, sharp, bevel):
+    """Edges each material rounds. An edge between two materials is rounded when both enable
+    rounding and either one's rule picks it; it takes the smaller radius and the shading of the
+    material of its first face."""
+    flags = m.edge_flags()
+    angles = m.edge_angles()
+    normals = m.edge_normals()
+    face_a, face_b = _first_two_faces(tri_edges, len(edges))
+    ok = ((flags & native.EDGE_MANIFOLD) != 0) & ((flags & native.EDGE_DEGENERATE) == 0) & (face_b >= 0)
+    slot_a = np.where(face_a >= 0, tri_slot[np.maximum(face_a, 0)], 0)
+    slot_b = np.where(face_b >= 0, tri_slot[np.maximum(face_b, 0)], 0)
+
+    def picked(slot):
+        enabled = np.array([s.enabled and s.radius > 0.0 and s.K > 0.0 for s in shading])[slot]
+        by_angle = np.array(['ANGLE' in s.rules for s in shading])[slot] & (angles > np.array([s.angle_deg for s in shading])[slot])
+        by_sharp = np.array(['SHARP' in s.rules for s in shading])[slot] & sharp
+        by_bevel = np.array(['BEVEL' in s.rules for s in shading])[slot] & (bevel > 0.0)
+        radius = np.array([s.radius for s in shading], np.float32)[slot]
+        # Picked by bevel weight alone: the weight scales the radius (like the Bevel modifier).
+        radius = np.where(by_bevel & ~(by_angle | by_sharp), radius * bevel, radius)
+        return enabled, by_angle | by_sharp | by_bevel, radius
+
+    en_a, pick_a, rad_a = picked(slot_a)
+    en_b, pick_b, rad_b = picked(slot_b)
+    chosen = ok & en_a & en_b & (pick_a | pick_b)
+    radius = np.minimum(np.where(pick_a, rad_a, np.inf), np.where(pick_b, rad_b, np.inf)).astype(np.float32)
+    out = {}
+    for slot in np.unique(slot_a[chosen]):
+        sel = np.flatnonzero(chosen & (slot_a == slot))
+        out[int(slot)] = EdgeSet(positions[edges[sel, 0]], positions[edges[sel, 1]],
+                                 np.ascontiguousarray(normals[sel, :3]), np.ascontiguousarray(normals[sel, 3:]),
+                                 radius[sel])
+    return out
+
+
+def _light(ob, matrix):
+    data = ob.data
+    kind = {'SUN': 0, 'POINT': 1, 'SPOT': 2, 'AREA': 3}.get(data.type)
+    if kind is None:
+        return None
+    m = np.array(matrix, dtype=np.float64)
+    direction = -m[:3, 2] / max(np.linalg.norm(m[:3, 2]), 1e-12)
+    color = tuple(float(c) * float(data.energy) for c in data.color)
+    light = Light(kind, color, tuple(m[:3, 3]), tuple(direction))
+    if kind == 2:
+        light.spot_cos = math.cos(data.spot_size / 2.0)
+        light.spot_blend = float(data.spot_blend)
+    return light
+
+
+def world_ambient(scene):
+    world = scene.world
+    if world is None:
+        return (0.0, 0.0, 0.0)
+    if world.use_nodes and world.node_tree:
+        for node in world.node_tree.nodes:
+            if node.type == 'BACKGROUND':
+                c, s = node.inputs["Color"].default_value, node.inputs["Strength"].default_value
+                return tuple(float(v) * float(s) for v in c[:3])
+    return tuple(float(v) for v in world.color)
+
+
+def collect(depsgraph, lib=None):
+    """Everything visible in the evaluated scene. Objects that fail are reported and skipped."""
+    instances, lights, reports, extracted = [], [], [], {}
+    for inst in depsgraph.object_instances:
+        ob = inst.object
+        if ob.type == 'LIGHT':
+            light = _light(ob, inst.matrix_world)
+            if light:
+                lights.append(light)
+            continue
+        if ob.type not in GEOMETRY_TYPES:
+            continue
+        key = ob.name
+        if key not in extracted:
+            extracted[key] = None
+            mesh = None
+            try:
+                mesh = ob.to_mesh()
+                if mesh is None:
+                    raise SkipObject(f"{ob.name}: no geometry")
+                materials = [slot.material for slot in ob.material_slots]
+                extracted[key] = extract_mesh(ob.name, mesh, materials, lib=lib)
+                note = extracted[key].info.get("note")
+                if note:
+                    reports.append(note)
+            except SkipObject as e:
+                reports.append(str(e))
+            finally:
+                if mesh is not None:
+                    ob.to_mesh_clear()
+        if extracted[key] is not None:
+            instances.append(Instance(extracted[key], np.array(inst.matrix_world, dtype=np.float32)))
+    return SceneData(instances, lights, world_ambient(depsgraph.scene), reports)

@@ -1,0 +1,42 @@
+/* Edge highlight pass: one screen-space quad per rounded edge (no wide GL lines, no geometry
+ * shader). corner.x picks the end (0: p0, 1: p1), corner.y the side (-1, +1), corner.z is the
+ * radius. The quad is as wide as the rounded edge's projected width plus one pixel, so every
+ * pixel the band touches runs the fragment shader, which measures its own coverage. */
+void main()
+{
+  mat3 nmat = transpose(inverse(mat3(model)));
+  vec3 w0 = (model * vec4(p0, 1.0)).xyz;
+  vec3 w1 = (model * vec4(p1, 1.0)).xyz;
+  edge_n1 = normalize(nmat * n1);
+  edge_n2 = normalize(nmat * n2);
+  edge_dir = w1 - w0;
+  edge_radius = corner.z * length(mat3(model) * normalize(vec3(1.0)));
+
+  vec4 c0 = frame.projection * (frame.view * vec4(w0, 1.0));
+  vec4 c1 = frame.projection * (frame.view * vec4(w1, 1.0));
+  vec3 world = corner.x < 0.5 ? w0 : w1;
+  vec4 c = corner.x < 0.5 ? c0 : c1;
+  /* An end behind the eye: skip the edge (its other end is clipped anyway). */
+  if (c0.w <= 0.0 || c1.w <= 0.0) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    return;
+  }
+  vec2 s0 = (c0.xy / c0.w * 0.5 + 0.5) * frame.viewport.xy;
+  vec2 s1 = (c1.xy / c1.w * 0.5 + 0.5) * frame.viewport.xy;
+  vec2 along = s1 - s0;
+  float len = length(along);
+  vec2 dir = len > 1e-6 ? along / len : vec2(1.0, 0.0);
+  vec2 across = vec2(-dir.y, dir.x);
+  edge_screen = vec4(s0, across);
+
+  /* Widest the band can be: the whole arc's projected width at this end, in pixels. */
+  vec3 V = frame.eye.w > 0.5 ? frame.eye.xyz - world : -frame.view_dir.xyz;
+  float dist = frame.eye.w > 0.5 ? length(V) : 1.0;
+  float px_per_unit = frame.camera.x / max(dist, 1e-20);
+  float width_px = edge_radius * length(edge_n1 - edge_n2) * px_per_unit;
+  float half_px = 0.5 * min(width_px, 4096.0) + 1.0;
+
+  vec2 s = (corner.x < 0.5 ? s0 : s1) + across * corner.y * half_px;
+  edge_point = world;
+  gl_Position = vec4((s / frame.viewport.xy * 2.0 - 1.0) * c.w, c.z, c.w);
+}

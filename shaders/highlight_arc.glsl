@@ -1,0 +1,294 @@
+/* The rounded-edge integral of one pixel (docs/highlight_math.md): the float path of
+ * native/src/highlight_arc.cpp and the table lookup of highlight_table.cpp, step for step, so
+ * the native tests of that code speak for this shader. Needs the sampler cos_power_table and the
+ * push constant table_params = (layout, m_max, warp_c, unused). */
+#define EL_PI 3.14159265358979
+#define EL_HALF_PI 1.57079632679490
+#define EL_ANTIPARALLEL_BAND 1e-6
+#define EL_AXIAL_RAMP_S0 1e-2
+#define EL_GAUSS_SPAN 4.0
+
+/* 8-point Gauss-Legendre on [-1, 1], mirrored pairs. */
+const vec4 el_gl_x = vec4(0.183434642495649805, 0.525532409916328986, 0.796666477413626740, 0.960289856497536232);
+const vec4 el_gl_w = vec4(0.362683783378361983, 0.313706645877887287, 0.222381034453374471, 0.101228536290376259);
+
+float el_max3(vec3 v)
+{
+  return max(abs(v.x), max(abs(v.y), abs(v.z)));
+}
+
+vec3 el_safe_normalize(vec3 v)
+{
+  float s = el_max3(v);
+  if (!(s > 0.0)) {
+    return vec3(0.0);
+  }
+  v /= s;
+  return v * inversesqrt(dot(v, v));
+}
+
+float el_safe_length(vec3 v)
+{
+  float s = el_max3(v);
+  if (!(s > 0.0)) {
+    return 0.0;
+  }
+  v /= s;
+  return s * sqrt(dot(v, v));
+}
+
+/* ln cos t; near 0 as -2 atanh(tan^2(t/2)) so cos^n keeps its accuracy for large n. */
+float el_log_cos(float t)
+{
+  t = abs(t);
+  if (t < 1.0) {
+    float h = tan(0.5 * t);
+    float x = h * h, x2 = x * x;
+    float s = 1.0 + x2 * (1.0 / 3.0 + x2 * (1.0 / 5.0 + x2 * (1.0 / 7.0 + x2 * (1.0 / 9.0 + x2 * (1.0 / 11.0 + x2 * (1.0 / 13.0))))));
+    return -2.0 * x * s;
+  }
+  float c = cos(t);
+  return c > 0.0 ? log(c) : -1e30;
+}
+
+float el_log1p(float x)
+{
+  float u = 1.0 + x;
+  return u == 1.0 ? x : log(u) * x / (u - 1.0);
+}
+
+float el_cos_pow(float t, float n)
+{
+  return exp(n * el_log_cos(t));
+}
+
+/* Table row for exponent m: (row0, weight of row1, texel per radian, output scale). */
+vec4 el_table_row(float m)
+{
+  ivec2 size = textureSize(cos_power_table, 0);
+  float last_row = float(size.y - 1);
+  float y, phi_to_texel, out_scale;
+  if (table_params.x < 0.5) { /* EL_TABLE_PAPER */
+    y = m - 1.0;
+    phi_to_texel = float(size.x - 1) / 1.57079632679;
+    out_scale = 1.0;
+  }
+  else {
+    y = log(m) / log(table_params.y) * last_row;
+    float phi_end = min(1.57079632679, table_params.z / sqrt(m));
+    phi_to_texel = float(size.x - 1) / phi_end;
+    out_scale = 1.0 / sqrt(m);
+  }
+  y = clamp(y, 0.0, last_row);
+  float j = min(floor(y), last_row - 1.0);
+  return vec4(j, y - j, phi_to_texel, out_scale);
+}
+
+float el_table_lookup(vec4 row, float phi)
+{
+  float last = float(textureSize(cos_power_table, 0).x - 1);
+  float x = min(abs(phi) * row.z, last);
+  float i = min(floor(x), last - 1.0);
+  float fx = x - i;
+  int k = int(i), j = int(row.x);
+  float a0 = texelFetch(cos_power_table, ivec2(k, j), 0).r;
+  float a1 = texelFetch(cos_power_table, ivec2(k + 1, j), 0).r;
+  float b0 = texelFetch(cos_power_table, ivec2(k, j + 1), 0).r;
+  float b1 = texelFetch(cos_power_table, ivec2(k + 1, j + 1), 0).r;
+  float v0 = a0 + fx * (a1 - a0);
+  float v1 = b0 + fx * (b1 - b0);
+  float v = v0 + row.y * (v1 - v0);
+  return sign(phi) * v * row.w;
+}
+
+/* Part of the arc [0, alpha] inside the half circle around dir: lo, hi (empty if lo > hi) and
+ * the distances of the ends from the window's lower and upper horizons. */
+struct ElWindow {
+  float lo, hi, from_lower, to_upper;
+};
+
+ElWindow el_window_on_arc(vec2 dir, float alpha)
+{
+  ElWindow w;
+  float w0 = atan(-dir.x, dir.y);
+  float lo = 0.0, from_lower;
+  if (w0 > 0.0) {
+    lo = w0;
+    from_lower = 0.0;
+  }
+  else {
+    from_lower = -w0;
+  }
+  float hi = alpha, to_upper;
+  if (w0 <= 0.0) {
+    float up = atan(dir.x, -dir.y);
+    up = (up < -EL_HALF_PI) ? up + 2.0 * EL_PI : max(up, 0.0);
+    if (up < alpha) {
+      hi = up;
+      to_upper = 0.0;
+    }
+    else {
+      to_upper = up - alpha;
+    }
+  }
+  else {
+    to_upper = (w0 + EL_PI) - alpha;
+  }
+  w.lo = lo;
+  w.hi = hi;
+  w.from_lower = from_lower;
+  w.to_upper = to_upper;
+  return w;
+}
+
+float el_window_width(ElWindow w)
+{
+  if (w.lo > w.hi) {
+    return 0.0;
+  }
+  float len = w.hi - w.lo;
+  return 2.0 * sin(0.5 * len) * sin(min(w.from_lower, w.to_upper) + 0.5 * len);
+}
+
+/* View weight cos(u - u_v) along [a, b], measured from the nearer horizon of the visible window. */
+struct ElWeight {
+  float offset;
+  bool from_lower;
+  float len;
+};
+
+float el_weight_at(ElWeight w, float t)
+{
+  return sin(w.from_lower ? w.offset + t : w.offset + (w.len - t));
+}
+
+ElWeight el_weight_on(ElWindow vis, float a, float b)
+{
+  float off_lo = vis.from_lower + (a - vis.lo);
+  float off_hi = vis.to_upper + (vis.hi - b);
+  ElWeight w;
+  w.from_lower = off_lo <= off_hi;
+  w.offset = w.from_lower ? off_lo : off_hi;
+  w.len = b - a;
+  return w;
+}
+
+struct ElArc {
+  float alpha;     /* arc length */
+  vec2 view;       /* V in the arc frame; |view| = |E x V| */
+  ElWindow vis;    /* visible part */
+  float width;     /* its projected width, unit radius */
+  float hidden;    /* projected width of the hidden part */
+  vec3 a1, b1;     /* arc frame: N1 direction, and ez x a1 */
+};
+
+/* E, n1, n2, V need not be unit. Returns alpha < 0 when the normals say nothing about an arc. */
+ElArc el_arc(vec3 edge, vec3 n1, vec3 n2, vec3 V)
+{
+  ElArc g;
+  vec3 E = el_safe_normalize(edge);
+  n1 /= max(el_max3(n1), 1e-30);
+  n2 /= max(el_max3(n2), 1e-30);
+  vec3 p1 = n1 - E * dot(E, n1), p2 = n2 - E * dot(E, n2);
+  float l1 = el_safe_length(p1), l2 = el_safe_length(p2);
+  float det = dot(cross(n1, n2), E) / l1 / l2;
+  float dot12 = dot(p1 / l1, p2 / l2);
+  vec3 ez = E;
+  if (dot12 < 0.0 && abs(det) <= EL_ANTIPARALLEL_BAND) {
+    g.alpha = EL_PI;
+  }
+  else {
+    if (det < 0.0) {
+      ez = -E;
+    }
+    g.alpha = atan(abs(det), dot12);
+  }
+  g.a1 = p1 / l1;
+  g.b1 = cross(ez, g.a1);
+  g.view = vec2(dot(V, g.a1), dot(V, g.b1));
+  g.vis = el_window_on_arc(g.view, g.alpha);
+  g.width = el_window_width(g.vis);
+  g.hidden = el_window_width(el_window_on_arc(-g.view, g.alpha));
+  return g;
+}
+
+/* Mean of max(N.D, 0)^n over the visible arc, weighted by projected width. d: D in the arc frame
+ * (|D| = d_len), d_axial = (D.E)^2 / (D.D). */
+float el_arc_kernel(ElArc g, vec2 d, float d_len, float d_axial, float n)
+{
+  float dlen = sqrt(dot(d, d));
+  if (g.vis.lo > g.vis.hi || !(dlen > 0.0)) {
+    return 0.0;
+  }
+  ElWindow lit = el_window_on_arc(d, g.alpha);
+  float a = max(g.vis.lo, lit.lo), b = min(g.vis.hi, lit.hi);
+  if (a > b) {
+    return 0.0;
+  }
+  float u_d = atan(d.y, d.x);
+  if (u_d < -EL_HALF_PI) {
+    u_d += 2.0 * EL_PI;
+  }
+  float ta = clamp(a - u_d, -EL_HALF_PI, EL_HALF_PI);
+  float tb = clamp(b - u_d, -EL_HALF_PI, EL_HALF_PI);
+  float log_dp = d_axial < 0.5 ? 0.5 * el_log1p(-d_axial) : log(dlen / d_len);
+  float log_dn = n * log_dp;
+  float m = n + 1.0;
+  float sqrt_m = sqrt(m);
+  float lv = g.vis.hi - g.vis.lo, ll = b - a;
+
+  if (ll * sqrt_m <= EL_GAUSS_SPAN) {
+    ElWeight wj = el_weight_on(g.vis, a, b);
+    float h = 0.5 * ll;
+    float num = 0.0, den = 0.0;
+    for (int k = 0; k < 4; k++) {
+      for (int s = -1; s <= 1; s += 2) {
+        float t = h * (1.0 + float(s) * el_gl_x[k]);
+        float wv = el_gl_w[k] * el_weight_at(wj, t);
+        num += wv * exp(log_dn + n * el_log_cos(ta + t));
+        den += wv;
+      }
+    }
+    if (a == g.vis.lo && b == g.vis.hi) {
+      return den > 0.0 ? clamp(num / den, 0.0, 1.0) : 0.0;
+    }
+    float jnum = h * num;
+    float wden;
+    if (lv * sqrt_m <= EL_GAUSS_SPAN) {
+      ElWeight wv = el_weight_on(g.vis, g.vis.lo, g.vis.hi);
+      float hv = 0.5 * lv;
+      wden = 0.0;
+      for (int k = 0; k < 4; k++) {
+        wden += el_gl_w[k] * (el_weight_at(wv, hv * (1.0 - el_gl_x[k])) + el_weight_at(wv, hv * (1.0 + el_gl_x[k])));
+      }
+      wden *= hv;
+    }
+    else {
+      wden = g.width;
+    }
+    return wden > 0.0 ? clamp(jnum / wden, 0.0, 1.0) : 0.0;
+  }
+
+  vec2 vhat = g.view / sqrt(dot(g.view, g.view));
+  vec2 dhat = d / dlen;
+  float cos_v = dot(vhat, dhat);
+  float sin_v = dhat.x * vhat.y - dhat.y * vhat.x;
+  vec4 row = el_table_row(m);
+  float dF = el_table_lookup(row, tb) - el_table_lookup(row, ta);
+  float dC = el_cos_pow(ta, m) - el_cos_pow(tb, m);
+  float j = exp(log_dn) * (cos_v * dF + sin_v * dC / m);
+  return g.width > 0.0 ? clamp(j / g.width, 0.0, 1.0) : 0.0;
+}
+
+/* Specular (D = H, exponent n) or diffuse (D = L, exponent 1) mean over the arc. */
+float el_arc_mean(ElArc g, vec3 D, vec3 E, float n)
+{
+  float dd = dot(D, D);
+  float de = dot(D, el_safe_normalize(E));
+  return el_arc_kernel(g, vec2(dot(D, g.a1), dot(D, g.b1)), sqrt(dd), dd > 0.0 ? de * de / dd : 1.0, n);
+}
+
+float el_axial_ramp(float s)
+{
+  return clamp((s - EL_AXIAL_RAMP_S0) / EL_AXIAL_RAMP_S0, 0.0, 1.0);
+}

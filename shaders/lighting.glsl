@@ -1,0 +1,34 @@
+/* Light i seen from world point X: unit direction towards the light and the irradiance it
+ * delivers on a surface facing it. Units follow Cycles: sun strength is irradiance (W/m^2), a
+ * point or spot light of power P has intensity P / (4 pi), an area light of power P is a
+ * one-sided Lambertian emitter, intensity P / pi * cos(emission angle). */
+void light_at(int i, vec3 X, out vec3 L, out vec3 E)
+{
+  vec4 c = frame.light_color[i];
+  int type = int(c.w + 0.5);
+  if (type == 0) {
+    L = -frame.light_direction[i].xyz;
+    E = c.rgb;
+    return;
+  }
+  vec3 d = frame.light_position[i].xyz - X;
+  float r2 = max(dot(d, d), 1e-12);
+  L = d * inversesqrt(r2);
+  float along = dot(-L, frame.light_direction[i].xyz);
+  if (type == 3) {
+    E = c.rgb * max(along, 0.0) / (3.14159265 * r2);
+    return;
+  }
+  E = c.rgb / (4.0 * 3.14159265 * r2);
+  if (type == 2) {
+    float cos_edge = frame.light_direction[i].w;
+    float blend = frame.light_spot[i].x;
+    E *= smoothstep(cos_edge, mix(cos_edge, 1.0, max(blend, 1e-4)), along);
+  }
+}
+
+/* Normalised Blinn-Phong lobe: (n + 8) / (8 pi) keeps the reflected energy steady as n grows. */
+float blinn_norm(float n)
+{
+  return (n + 8.0) / (8.0 * 3.14159265);
+}

@@ -1,0 +1,76 @@
+"""Shared by the add-on tests: open samples, render, find scene points in the image."""
+import os
+
+import bpy
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SAMPLES = os.path.join(ROOT, "blend_samples")
+
+
+def addon():
+    import edgelight
+    return edgelight
+
+
+def open_sample(name, **scene_settings):
+    bpy.ops.wm.open_mainfile(filepath=os.path.join(SAMPLES, name + ".blend"))
+    scene = bpy.context.scene
+    scene.render.engine = "EDGELIGHT"
+    scene.view_settings.view_transform = 'Standard'
+    scene.edgelight.samples = scene_settings.pop("samples", 1)
+    for key, value in scene_settings.items():
+        setattr(scene.edgelight, key, value)
+    return scene
+
+
+def render(resolution=None, expect_error=False):
+    """Renders the current scene; returns the engine's record of it (pixels, buffers, camera).
+
+    An engine ERROR report makes the operator raise RuntimeError, as Blender does for any
+    operator; with expect_error the record is returned with the error text under "raised"."""
+    scene = bpy.context.scene
+    if resolution:
+        scene.render.resolution_x, scene.render.resolution_y = resolution
+        scene.render.resolution_percentage = 100
+    try:
+        bpy.ops.render.render()
+    except RuntimeError as e:
+        if not expect_error:
+            raise
+        return dict(addon().engine.last_render, raised=str(e))
+    if expect_error:
+        raise AssertionError("the render reported no error")
+    return dict(addon().engine.last_render)
+
+
+def project(rec, points):
+    """World points -> pixel coordinates (x right, y up, pixel centres at .5)."""
+    cam = rec["camera"]
+    p = np.c_[np.asarray(points, np.float64), np.ones(len(points))]
+    clip = (cam.projection @ cam.view @ p.T).T
+    ndc = clip[:, :2] / clip[:, 3:4]
+    return (ndc * 0.5 + 0.5) * np.array([cam.width, cam.height])
+
+
+def luminance(rgb):
+    return rgb[..., 0] * 0.2126 + rgb[..., 1] * 0.7152 + rgb[..., 2] * 0.0722
+
+
+def sample(image, xy):
+    """Nearest pixel of (h, w, C) image at pixel coordinates xy."""
+    x = np.clip(np.floor(xy[..., 0]).astype(int), 0, image.shape[1] - 1)
+    y = np.clip(np.floor(xy[..., 1]).astype(int), 0, image.shape[0] - 1)
+    return image[y, x]
+
+
+def edge_profile(rec, image, a, b, ts, offsets):
+    """Values of `image` across the projected edge a-b: (len(ts), len(offsets), C)."""
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    pts = a[None] + np.asarray(ts)[:, None] * (b - a)[None]
+    xy = project(rec, pts)
+    sa, sb = project(rec, [a, b])
+    d = (sb - sa) / np.linalg.norm(sb - sa)
+    n = np.array([-d[1], d[0]])
+    grid = xy[:, None, :] + np.asarray(offsets)[None, :, None] * n[None, None, :]
+    return sample(image, grid)

@@ -1,0 +1,143 @@
+"""Bad input gets a report and the render goes on; the user's data is never changed."""
+import hashlib
+import os
+import unittest
+
+import bpy
+import numpy as np
+
+import helpers
+
+
+def add_object(name, verts, edges, faces, material=None):
+    me = bpy.data.meshes.new(name)
+    me.from_pydata(verts, edges, faces)
+    ob = bpy.data.objects.new(name, me)
+    if material:
+        me.materials.append(material)
+    bpy.context.scene.collection.objects.link(ob)
+    return ob
+
+
+def messages(rec):
+    return " | ".join(m for _, m in rec.get("messages", []))
+
+
+class BadMeshes(unittest.TestCase):
+    def setUp(self):
+        helpers.open_sample("cube")
+
+    def render_ok(self):
+        rec = helpers.render(resolution=(160, 120))
+        self.assertIn("pixels", rec, messages(rec))
+        self.assertTrue(np.isfinite(rec["pixels"]).all())
+        return rec
+
+    def test_loose_edges_only(self):
+        add_object("Wire", [(3, 0, 0), (4, 0, 0), (4, 1, 0)], [(0, 1), (1, 2)], [])
+        rec = self.render_ok()
+        self.assertIn("Wire: no faces (2 loose edges)", messages(rec))
+        self.assertEqual(rec["stats"].objects, 1, "the cube still renders")
+
+    def test_nan_coordinates(self):
+        ob = add_object("Broken", [(3, 0, 0), (4, 0, 0), (4, 1, 0)], [], [(0, 1, 2)])
+        ob.data.vertices[1].co = (float("nan"), 0.0, 0.0)
+        rec = self.render_ok()
+        self.assertIn("Broken: el_mesh_create: position of vertex 1 is not finite", messages(rec))
+        self.assertEqual(rec["stats"].objects, 1, "the cube still renders")
+
+    def test_zero_area_faces(self):
+        add_object("Sliver", [(3, 0, 0), (4, 0, 0), (5, 0, 0), (3, 1, 0)], [], [(0, 1, 2), (0, 1, 3)])
+        rec = self.render_ok()
+        self.assertIn("Sliver: 1 zero-area faces", messages(rec))
+        self.assertEqual(rec["stats"].objects, 2)
+
+    def test_no_material(self):
+        bpy.data.objects["Cube"].data.materials.clear()
+        rec = self.render_ok()
+        self.assertEqual(messages(rec), "")
+        self.assertGreater(rec["stats"].edges_drawn, 0, "the default look rounds edges too")
+
+
+class NativeLibraryProblems(unittest.TestCase):
+    def render_with_library(self, path):
+        helpers.open_sample("cube")
+        old = os.environ.get("EDGELIGHT_LIBRARY")
+        os.environ["EDGELIGHT_LIBRARY"] = path
+        try:
+            return helpers.render(resolution=(160, 120), expect_error=True)
+        finally:
+            if old is None:
+                del os.environ["EDGELIGHT_LIBRARY"]
+            else:
+                os.environ["EDGELIGHT_LIBRARY"] = old
+
+    def test_missing_library(self):
+        rec = self.render_with_library("/nonexistent/libedgelight.so")
+        self.assertIn("native library unavailable", messages(rec))
+        self.assertIn("cannot load /nonexistent/libedgelight.so", rec["raised"])
+        self.assertNotIn("pixels", rec)
+
+    def test_abi_mismatch(self):
+        fake = os.environ.get("EDGELIGHT_FAKE_ABI_LIBRARY")
+        self.assertTrue(fake and os.path.exists(fake), "the test build provides a mismatched library")
+        rec = self.render_with_library(fake)
+        self.assertIn("has ABI version 999, this add-on needs", messages(rec))
+
+
+def fingerprint():
+    """Hash of every mesh's geometry and attributes and every material's settings and nodes."""
+    h = hashlib.sha256()
+    for me in bpy.data.meshes:
+        for coll, prop, width in ((me.vertices, "co", 3), (me.edges, "vertices", 2), (me.loops, "vertex_index", 1)):
+            a = np.empty(len(coll) * width, np.float64 if prop == "co" else np.int64)
+            coll.foreach_get(prop, a)
+            h.update(a.tobytes())
+        for attr in me.attributes:
+            h.update(attr.name.encode())
+        h.update(str(sorted(me.keys())).encode())
+    for mat in bpy.data.materials:
+        h.update(repr([getattr(mat.edgelight, k) for k in ("enabled", "K", "radius", "angle")]).encode())
+        h.update(repr(tuple(mat.diffuse_color)).encode())
+        if mat.node_tree:
+            for node in mat.node_tree.nodes:
+                for socket in node.inputs:
+                    if hasattr(socket, "default_value"):
+                        v = socket.default_value
+                        h.update(repr(tuple(v) if hasattr(v, "__len__") else v).encode())
+    return h.hexdigest(), len(bpy.data.meshes), len(bpy.data.materials)
+
+
+class UserDataUnchanged(unittest.TestCase):
+    def test_render_changes_no_mesh_or_material(self):
+        for name in ("cube", "fandisk", "prop"):
+            helpers.open_sample(name)
+            before = fingerprint()
+            helpers.render(resolution=(160, 120))
+            self.assertEqual(before, fingerprint(), name)
+
+
+class SettingsSurviveSaveAndReload(unittest.TestCase):
+    def test_round_trip(self):
+        import tempfile
+        helpers.open_sample("cube", samples=5)
+        s = bpy.data.materials["Cube"].edgelight
+        s.K, s.radius, s.tint, s.selection, s.angle = 2.5, 0.033, (0.2, 0.4, 0.6), {'SHARP'}, 0.7
+        s.use_custom_shininess, s.shininess = True, 123.0
+        path = os.path.join(tempfile.mkdtemp(), "roundtrip.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        s = bpy.data.materials["Cube"].edgelight
+        self.assertAlmostEqual(s.K, 2.5, places=6)
+        self.assertAlmostEqual(s.radius, 0.033, places=6)
+        self.assertEqual(tuple(round(c, 6) for c in s.tint), (0.2, 0.4, 0.6))
+        self.assertEqual(set(s.selection), {'SHARP'})
+        self.assertAlmostEqual(s.angle, 0.7, places=6)
+        self.assertTrue(s.use_custom_shininess)
+        self.assertEqual(s.shininess, 123.0)
+        self.assertEqual(bpy.context.scene.edgelight.samples, 5)
+        self.assertEqual(bpy.context.scene.render.engine, "EDGELIGHT")
+
+
+if __name__ == "__main__":
+    unittest.main()
