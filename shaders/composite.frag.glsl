@@ -1,5 +1,6 @@
 /* I = W Is + (1 - W) I_origin, with the highlight buffer premultiplied (W Is, W); then the world
- * colour behind whatever is not opaque (background.w = 0 for a transparent film). */
+ * colour behind whatever is not opaque (background.w = 0 for a transparent film). Samples add up
+ * in the result with additive blending, each scaled by weight = 1 / samples. */
 void main()
 {
   ivec2 p = ivec2(gl_FragCoord.xy);
@@ -7,5 +8,5 @@ void main()
   vec4 hl = texelFetch(highlight_color, p, 0);
   vec3 rgb = hl.rgb + (1.0 - hl.a) * surf.rgb;
   float a = hl.a + (1.0 - hl.a) * surf.a;
-  out_color = vec4(rgb + (1.0 - a) * background.w * background.rgb, mix(a, 1.0, background.w));
+  out_color = vec4(rgb + (1.0 - a) * background.w * background.rgb, mix(a, 1.0, background.w)) * weight;
 }

@@ -10,23 +10,23 @@ void main()
   float dist = persp ? el_safe_length(to_eye) : 1.0;
   vec3 V = el_safe_normalize(to_eye);
 
-  ElArc g = el_arc(edge_dir, edge_n1, edge_n2, V);
-  float s = sqrt(dot(g.view, g.view)); /* |E x V| */
-  if (!(g.width > 0.0) || !(s > 0.0)) {
-    discard;
-  }
-
-  /* Visibility: the edge lies on its own surface, whose depth at pixels next to the line differs
-   * by up to the lateral distance times the faces' depth slope. */
+  /* Visibility first (cheap): the edge lies on its own surface, whose depth at pixels next to the
+   * line differs by up to the lateral distance times the faces' depth slope. */
   float world_per_px = dist / frame.camera.x;
   float across = dot(pc - edge_screen.xy, edge_screen.zw);
-  float c1 = abs(dot(edge_n1, V)), c2 = abs(dot(edge_n2, V));
+  float c1 = abs(dot(normalize(edge_n1), V)), c2 = abs(dot(normalize(edge_n2), V));
   float cmin = max(min(c1, c2), 1.0 / 16.0);
   float slope = sqrt(max(1.0 - cmin * cmin, 0.0)) / cmin;
   float bias = (abs(across) + 1.0) * world_per_px * (slope + 0.05) + 1e-5 * dist;
   float inv_surface = texelFetch(surface_depth, ivec2(pc), 0).r;
   float edge_depth = -(frame.view * vec4(X, 1.0)).z;
   if (inv_surface > 0.0 && edge_depth > 1.0 / inv_surface + bias) {
+    discard;
+  }
+
+  ElArc g = el_arc(edge_dir, edge_n1, edge_n2, V);
+  float s = sqrt(dot(g.view, g.view)); /* |E x V| */
+  if (!(g.width > 0.0) || !(s > 0.0)) {
     discard;
   }
 

@@ -1,7 +1,8 @@
 /* Edge highlight pass: one screen-space quad per rounded edge (no wide GL lines, no geometry
  * shader). corner.x picks the end (0: p0, 1: p1), corner.y the side (-1, +1), corner.z is the
- * radius. The quad is as wide as the rounded edge's projected width plus one pixel, so every
- * pixel the band touches runs the fragment shader, which measures its own coverage. */
+ * radius. The quad reaches half a pixel past the rounded edge's projected band on each side: the
+ * support of the fragment shader's box-filtered coverage, so every pixel the band touches runs it
+ * and no other does. */
 void main()
 {
   mat3 nmat = transpose(inverse(mat3(model)));
@@ -34,7 +35,7 @@ void main()
   float dist = frame.eye.w > 0.5 ? length(V) : 1.0;
   float px_per_unit = frame.camera.x / max(dist, 1e-20);
   float width_px = edge_radius * length(edge_n1 - edge_n2) * px_per_unit;
-  float half_px = 0.5 * min(width_px, 4096.0) + 1.0;
+  float half_px = 0.5 * min(width_px, 4096.0) + 0.5 + 1.0 / 64.0;
 
   vec2 s = (corner.x < 0.5 ? s0 : s1) + across * corner.y * half_px;
   edge_point = world;

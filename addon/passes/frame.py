@@ -159,15 +159,18 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
         gpu.state.blend_set('NONE')
 
 
-def draw_composite(targets, background, full_screen):
+def draw_composite(targets, background, full_screen, weight):
+    """Adds weight x the composited sample to the result (cleared by the caller)."""
     shader = shader_lib.get("composite")
     with targets.result_fb.bind():
-        targets.result_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
+        gpu.state.blend_set('ADDITIVE_PREMULT')
         shader.bind()
         shader.uniform_sampler("surface_color", targets.surface_color)
         shader.uniform_sampler("highlight_color", targets.highlight)
         shader.uniform_float("background", background)
+        shader.uniform_float("weight", weight)
         full_screen.draw(shader)
+        gpu.state.blend_set('NONE')
 
 
 def read(texture, width, height):
@@ -194,8 +197,9 @@ def render(scene, camera, settings, targets=None, gpu_meshes=None, progress=None
     full_screen = batches.fullscreen_batch()
     background = (*scene.ambient, 0.0 if settings.transparent else 1.0)
     stats = Stats(objects=len(scene.instances))
-    acc = np.zeros((h, w, 4), np.float64)
     samples = max(1, int(settings.samples))
+    with targets.result_fb.bind():
+        targets.result_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
     for s in range(samples):
         if cancelled and cancelled():
             break
@@ -208,8 +212,7 @@ def render(scene, camera, settings, targets=None, gpu_meshes=None, progress=None
         else:
             with targets.highlight_fb.bind():
                 targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
-        draw_composite(targets, background, full_screen)
-        acc += read(targets.result, w, h)
+        draw_composite(targets, background, full_screen, 1.0 / samples)
         stats.samples += 1
         if progress:
             progress((s + 1) / samples)
@@ -217,4 +220,7 @@ def render(scene, camera, settings, targets=None, gpu_meshes=None, progress=None
         keep["surface"] = read(targets.surface_color, w, h)
         keep["highlight"] = read(targets.highlight, w, h)
         keep["depth"] = read(targets.surface_depth, w, h)
-    return (acc / max(stats.samples, 1)).astype(np.float32), stats
+    pixels = read(targets.result, w, h)
+    if 0 < stats.samples < samples:  # cancelled: rescale what was accumulated
+        pixels *= samples / stats.samples
+    return pixels, stats
