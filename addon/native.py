@@ -340,7 +340,8 @@ class HighlightTable(_Handle):
     """The F(phi, m) table (el_highlight_table), ready to upload as an R32F texture."""
     _destroy = "el_highlight_table_destroy"
 
-    def __init__(self, layout=TABLE_WARPED, phi_count=256, m_count=64, m_max=16384.0, lib=None):
+    # Recommended default (docs/highlight_math.md): 256 x 256, exponents 1..10001, max error 2.2e-5.
+    def __init__(self, layout=TABLE_WARPED, phi_count=256, m_count=256, m_max=10001.0, lib=None):
         lib = lib or load()
         d = TableDesc(layout, phi_count, m_count, m_max)
         handle = _P()

@@ -37,10 +37,15 @@ float el_safe_length(vec3 v)
   return s * sqrt(dot(v, v));
 }
 
-/* ln cos t; near 0 as -2 atanh(tan^2(t/2)) so cos^n keeps its accuracy for large n. */
+/* ln cos t. Below 0.5 its Taylor series, below 1 as -2 atanh(tan^2(t/2)): cos t rounds to a
+ * multiple of 6e-8 near 0, and cos^n multiplies that by n. */
 float el_log_cos(float t)
 {
   t = abs(t);
+  if (t < 0.5) {
+    float x = t * t;
+    return -x * (1.0 / 2.0 + x * (1.0 / 12.0 + x * (1.0 / 45.0 + x * (17.0 / 2520.0 + x * (31.0 / 14175.0 + x * (691.0 / 935550.0 + x * (5461.0 / 21283605.0)))))));
+  }
   if (t < 1.0) {
     float h = tan(0.5 * t);
     float x = h * h, x2 = x * x;
@@ -49,6 +54,30 @@ float el_log_cos(float t)
   }
   float c = cos(t);
   return c > 0.0 ? log(c) : -1e30;
+}
+
+/* v * 2^-e with the largest component in [0.5, 1): exact, so directions keep every bit. */
+vec3 el_pow2_scale(vec3 v)
+{
+  int e;
+  frexp(el_max3(v), e);
+  return vec3(ldexp(v.x, -e), ldexp(v.y, -e), ldexp(v.z, -e));
+}
+
+/* a*b - c*d with a single rounding (Kahan): tiny cross products of unit vectors stay exact. */
+float el_diff_of_products(float a, float b, float c, float d)
+{
+  float w = c * d;
+  float e = fma(-c, d, w);
+  float f = fma(a, b, -w);
+  return f + e;
+}
+
+vec3 el_cross_exact(vec3 a, vec3 b)
+{
+  return vec3(el_diff_of_products(a.y, b.z, a.z, b.y),
+              el_diff_of_products(a.z, b.x, a.x, b.z),
+              el_diff_of_products(a.x, b.y, a.y, b.x));
 }
 
 float el_log1p(float x)
@@ -101,43 +130,35 @@ float el_table_lookup(vec4 row, float phi)
   return sign(phi) * v * row.w;
 }
 
-/* Part of the arc [0, alpha] inside the half circle around dir: lo, hi (empty if lo > hi) and
- * the distances of the ends from the window's lower and upper horizons. */
+/* Part of the arc [0, alpha] inside a half circle: lo, hi (empty if lo > hi) and the distances
+ * of the ends from the window's lower and upper horizons. */
 struct ElWindow {
   float lo, hi, from_lower, to_upper;
 };
 
-ElWindow el_window_on_arc(vec2 dir, float alpha)
+/* The window's horizons as principal angles in (-pi, pi]: `lower` (where it starts turning
+ * positively) and `upper` = lower + pi. */
+ElWindow el_window_on_arc(float lower, float upper, float alpha)
 {
   ElWindow w;
-  float w0 = atan(-dir.x, dir.y);
-  float lo = 0.0, from_lower;
-  if (w0 > 0.0) {
-    lo = w0;
-    from_lower = 0.0;
+  if (lower > 0.0) {
+    w.lo = lower;
+    w.from_lower = 0.0;
+    w.hi = alpha;
+    w.to_upper = (lower + EL_PI) - alpha;
+    return w;
+  }
+  w.lo = 0.0;
+  w.from_lower = -lower;
+  float up = (upper < -EL_HALF_PI) ? upper + 2.0 * EL_PI : max(upper, 0.0);
+  if (up < alpha) {
+    w.hi = up;
+    w.to_upper = 0.0;
   }
   else {
-    from_lower = -w0;
+    w.hi = alpha;
+    w.to_upper = up - alpha;
   }
-  float hi = alpha, to_upper;
-  if (w0 <= 0.0) {
-    float up = atan(dir.x, -dir.y);
-    up = (up < -EL_HALF_PI) ? up + 2.0 * EL_PI : max(up, 0.0);
-    if (up < alpha) {
-      hi = up;
-      to_upper = 0.0;
-    }
-    else {
-      to_upper = up - alpha;
-    }
-  }
-  else {
-    to_upper = (w0 + EL_PI) - alpha;
-  }
-  w.lo = lo;
-  w.hi = hi;
-  w.from_lower = from_lower;
-  w.to_upper = to_upper;
   return w;
 }
 
@@ -182,16 +203,18 @@ struct ElArc {
   vec3 a1, b1;     /* arc frame: N1 direction, and ez x a1 */
 };
 
-/* E, n1, n2, V need not be unit. Returns alpha < 0 when the normals say nothing about an arc. */
+/* E, n1, n2, V need not be unit. */
 ElArc el_arc(vec3 edge, vec3 n1, vec3 n2, vec3 V)
 {
   ElArc g;
   vec3 E = el_safe_normalize(edge);
-  n1 /= max(el_max3(n1), 1e-30);
-  n2 /= max(el_max3(n2), 1e-30);
+  n1 = el_pow2_scale(n1);
+  n2 = el_pow2_scale(n2);
   vec3 p1 = n1 - E * dot(E, n1), p2 = n2 - E * dot(E, n2);
   float l1 = el_safe_length(p1), l2 = el_safe_length(p2);
-  float det = dot(cross(n1, n2), E) / l1 / l2;
+  /* Orientation and arc length from (N1 x N2).E of the unrounded inputs: a tiny arc keeps its
+   * relative accuracy. */
+  float det = dot(el_cross_exact(n1, n2), E) / l1 / l2;
   float dot12 = dot(p1 / l1, p2 / l2);
   vec3 ez = E;
   if (dot12 < 0.0 && abs(det) <= EL_ANTIPARALLEL_BAND) {
@@ -206,9 +229,12 @@ ElArc el_arc(vec3 edge, vec3 n1, vec3 n2, vec3 V)
   g.a1 = p1 / l1;
   g.b1 = cross(ez, g.a1);
   g.view = vec2(dot(V, g.a1), dot(V, g.b1));
-  g.vis = el_window_on_arc(g.view, g.alpha);
+  /* Horizons (N.V = 0): the view turned by -90 and +90 degrees; the hidden window is the
+   * visible one with the two swapped. */
+  float h_lo = atan(-g.view.x, g.view.y), h_hi = atan(g.view.x, -g.view.y);
+  g.vis = el_window_on_arc(h_lo, h_hi, g.alpha);
   g.width = el_window_width(g.vis);
-  g.hidden = el_window_width(el_window_on_arc(-g.view, g.alpha));
+  g.hidden = el_window_width(el_window_on_arc(h_hi, h_lo, g.alpha));
   return g;
 }
 
@@ -220,12 +246,21 @@ float el_arc_kernel(ElArc g, vec2 d, float d_len, float d_axial, float n)
   if (g.vis.lo > g.vis.hi || !(dlen > 0.0)) {
     return 0.0;
   }
-  ElWindow lit = el_window_on_arc(d, g.alpha);
+  /* Lit window from u_d -+ 90 degrees (its edges need only be roughly right: the integrand
+   * vanishes there), then lit and visible. */
+  float u_d = atan(d.y, d.x);
+  float lower = u_d - EL_HALF_PI, upper = u_d + EL_HALF_PI;
+  if (lower <= -EL_PI) {
+    lower += 2.0 * EL_PI;
+  }
+  if (upper > EL_PI) {
+    upper -= 2.0 * EL_PI;
+  }
+  ElWindow lit = el_window_on_arc(lower, upper, g.alpha);
   float a = max(g.vis.lo, lit.lo), b = min(g.vis.hi, lit.hi);
   if (a > b) {
     return 0.0;
   }
-  float u_d = atan(d.y, d.x);
   if (u_d < -EL_HALF_PI) {
     u_d += 2.0 * EL_PI;
   }
@@ -240,12 +275,15 @@ float el_arc_kernel(ElArc g, vec2 d, float d_len, float d_axial, float n)
   if (ll * sqrt_m <= EL_GAUSS_SPAN) {
     ElWeight wj = el_weight_on(g.vis, a, b);
     float h = 0.5 * ll;
+    float dp = exp(log_dp);
     float num = 0.0, den = 0.0;
     for (int k = 0; k < 4; k++) {
       for (int s = -1; s <= 1; s += 2) {
         float t = h * (1.0 + float(s) * el_gl_x[k]);
         float wv = el_gl_w[k] * el_weight_at(wj, t);
-        num += wv * exp(log_dn + n * el_log_cos(ta + t));
+        /* n = 1 (diffuse) needs no power */
+        float f = n == 1.0 ? dp * max(cos(ta + t), 0.0) : exp(log_dn + n * el_log_cos(ta + t));
+        num += wv * f;
         den += wv;
       }
     }

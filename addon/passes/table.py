@@ -10,7 +10,7 @@ _state = {}
 def table(lib=None):
     """(texture, params): params = (layout, m_max, warp_c, unused) for the shader."""
     if "texture" not in _state:
-        t = native.HighlightTable(native.TABLE_WARPED, 512, 64, 10001.0, lib=lib)
+        t = native.HighlightTable(lib=lib)  # the library's recommended default (docs/highlight_math.md)
         info = t.info()
         data = np.ascontiguousarray(t.data(), dtype=np.float32)
         buf = gpu.types.Buffer('FLOAT', data.size, data.ravel())
