@@ -227,8 +227,11 @@ typedef struct el_table_desc {
     int32_t layout;     /* el_table_layout */
     uint32_t phi_count; /* samples along phi (texture width), >= 2 */
     uint32_t m_count;   /* samples along the exponent (texture height), >= 2 */
-    float m_max;        /* WARPED: largest exponent covered (> 1); PAPER: ignored (= m_count) */
+    float m_max;        /* WARPED: largest exponent covered, in (1, 1e6]; PAPER: ignored (= m_count) */
 } el_table_desc;
+
+/* The recommended table (docs/highlight_math.md): max error 2.2e-5 for m in [1, 10001]. */
+#define EL_TABLE_DEFAULT_DESC {EL_TABLE_WARPED, 256u, 256u, 10001.0f}
 
 typedef struct el_table_info {
     int32_t layout;
@@ -250,7 +253,8 @@ EL_API el_status el_highlight_table_copy(const el_highlight_table* table, float*
 EL_API el_status el_highlight_table_lookup(const el_highlight_table* table, float phi, float m,
                                            float* out);
 
-/* Exact F(phi, m) in double (regularized incomplete beta), phi in [-pi/2, pi/2], m >= 0. */
+/* Exact F(phi, m) in double (regularized incomplete beta), phi in [-pi/2, pi/2] (float32 pi/2
+ * accepted), 0 <= m <= 1e9. */
 EL_API el_status el_cos_power_integral(double phi, double m, double* out);
 /* Closed-form part: integral_a^b cos^n(t) sin(t) dt = (cos^(n+1) a - cos^(n+1) b) / (n + 1),
  * a, b in [-pi/2, pi/2]. */
@@ -264,7 +268,7 @@ EL_API el_status el_highlight_weight(float K, float r_e, float d, float r_max, f
 typedef struct el_highlight_input {
     float point[3];     /* a point on the edge (world) */
     float edge_dir[3];  /* edge direction */
-    float n1[3];        /* normal of the first face */
+    float n1[3];        /* normal of the first face (rejected within 0.057 degrees of edge_dir) */
     float n2[3];        /* normal of the second face */
     float eye[3];       /* perspective: eye position */
     float view_dir[3];  /* orthographic: direction the camera looks along */
@@ -282,14 +286,18 @@ typedef struct el_highlight_result {
     float specular;     /* I_s specular factor: mean of max(N.H,0)^n over the visible arc,
                            weighted by projected width (in [0, 1]) */
     float diffuse;      /* the same with max(N.L,0) */
-    float weight;       /* W, clamped to [0, 1]; 0 when nothing of the arc is visible */
-    float r_max;        /* 1 / |P.(Na - Nb)| over the visible arc; 0 when none is */
+    float weight;       /* W, clamped to [0, 1]; 0 when nothing of the arc is visible. Fades to 0
+                           as the view comes within ~1.1 degrees of the edge axis (from 0 at
+                           |E x V| = 0.01 to full at 0.02) */
+    float r_max;        /* 1 / |P.(Na - Nb)| over the visible arc; 0 when the visible width is
+                           0 (nothing visible, or a flat edge facing the eye) */
     float visible_fraction; /* visible projected width / full projected width */
 } el_highlight_result;
 
 /* Float32 evaluation through the table: the same steps as shaders' edge_highlight pass. */
 EL_API el_status el_highlight_eval(const el_highlight_table* table, const el_highlight_input* in,
                                    el_highlight_result* out);
+/* count must be > 0. */
 EL_API el_status el_highlight_eval_batch(const el_highlight_table* table,
                                          const el_highlight_input* in, uint32_t count,
                                          el_highlight_result* out);
