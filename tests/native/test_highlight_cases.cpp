@@ -4,28 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include "highlight_fixtures.hpp"
+
 #include <cmath>
 #include <numbers>
+
+using fixtures::set3;
+using fixtures::Table;
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr float kS = 0.70710678f;  // 1/sqrt(2)
-
-struct Table {
-    el_highlight_table* t = nullptr;
-    Table() {
-        el_table_desc desc{EL_TABLE_WARPED, 256, 256, 10001.0f};
-        EXPECT_EQ(el_highlight_table_create(&desc, &t), EL_OK) << el_last_error();
-    }
-    ~Table() { el_highlight_table_destroy(t); }
-};
-
-void set3(float* d, float x, float y, float z) {
-    d[0] = x;
-    d[1] = y;
-    d[2] = z;
-}
+constexpr float kS = fixtures::kInvSqrt2;
 
 // Edge along +z through the origin, sun light, orthographic view along view_dir.
 el_highlight_input base(float n) {

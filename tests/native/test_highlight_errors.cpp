@@ -4,13 +4,21 @@
 
 #include <gtest/gtest.h>
 
+#include "highlight_fixtures.hpp"
+
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
 
+using fixtures::set3;
+using fixtures::Table;
+
 namespace {
+
+// Small and quick: error paths do not need the default table's accuracy.
+constexpr el_table_desc kSmall{EL_TABLE_WARPED, 64, 16, 10001.0f};
 
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 const float kInf = std::numeric_limits<float>::infinity();
@@ -21,14 +29,6 @@ const float kInf = std::numeric_limits<float>::infinity();
         const std::string msg = el_last_error();                                               \
         EXPECT_NE(msg.find(needle), std::string::npos) << #call << ": \"" << msg << "\"";      \
     } while (0)
-
-struct Table {
-    el_highlight_table* t = nullptr;
-    explicit Table(el_table_desc desc = {EL_TABLE_WARPED, 64, 16, 10001.0f}) {
-        EXPECT_EQ(el_highlight_table_create(&desc, &t), EL_OK) << el_last_error();
-    }
-    ~Table() { el_highlight_table_destroy(t); }
-};
 
 el_highlight_input valid_input() {
     el_highlight_input in{};
@@ -81,7 +81,7 @@ TEST(HighlightErrors, TableCreate) {
 }
 
 TEST(HighlightErrors, TableAccessors) {
-    Table t;
+    Table t(kSmall);
     el_table_info info{};
     EXPECT_FAILS(el_highlight_table_get_info(nullptr, &info), EL_ERR_NULL_POINTER, "table");
     EXPECT_FAILS(el_highlight_table_get_info(t.t, nullptr), EL_ERR_NULL_POINTER, "out");
@@ -183,7 +183,7 @@ const BadInput kBadInputs[] = {
 };
 
 TEST(HighlightErrors, Eval) {
-    Table t;
+    Table t(kSmall);
     el_highlight_input in = valid_input();
     el_highlight_result r{};
     EXPECT_FAILS(el_highlight_eval(nullptr, &in, &r), EL_ERR_NULL_POINTER, "table");
@@ -206,7 +206,7 @@ TEST(HighlightErrors, Eval) {
 }
 
 TEST(HighlightErrors, EvalBatch) {
-    Table t;
+    Table t(kSmall);
     std::vector<el_highlight_input> in(6, valid_input());
     std::vector<el_highlight_result> out(6);
     EXPECT_FAILS(el_highlight_eval_batch(nullptr, in.data(), 6, out.data()), EL_ERR_NULL_POINTER, "table");

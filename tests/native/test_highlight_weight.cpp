@@ -3,28 +3,18 @@
 
 #include <gtest/gtest.h>
 
+#include "highlight_fixtures.hpp"
+
 #include <cmath>
 #include <numbers>
+
+using fixtures::set3;
+using fixtures::Table;
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr float kS = 0.70710678f;
-
-struct Table {
-    el_highlight_table* t = nullptr;
-    Table() {
-        el_table_desc desc{EL_TABLE_WARPED, 256, 256, 10001.0f};
-        EXPECT_EQ(el_highlight_table_create(&desc, &t), EL_OK) << el_last_error();
-    }
-    ~Table() { el_highlight_table_destroy(t); }
-};
-
-void set3(float* d, float x, float y, float z) {
-    d[0] = x;
-    d[1] = y;
-    d[2] = z;
-}
+constexpr float kS = fixtures::kInvSqrt2;
 
 float weight(float K, float r, float d, float r_max) {
     float w = -1;
