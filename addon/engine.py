@@ -2,7 +2,7 @@
 import bpy
 import numpy as np
 
-from . import compat, native, scene_sync
+from . import compat, native, scene_sync, viewport
 from .passes import frame
 
 # The last final render's buffers, stats and reports, for tests and the benchmark script.
@@ -40,6 +40,22 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)  # 4.4+ passes arguments through
+        self.viewport = None
+
+    def view_update(self, context, depsgraph):
+        lib, error = load_library()
+        if lib is None:
+            self.report({'ERROR'}, f"EdgeLight: native library unavailable: {error}")
+            return
+        if self.viewport is None:
+            self.viewport = viewport.ViewportState()
+            viewport.last_state = self.viewport
+        self.viewport.sync(depsgraph, lib)
+
+    def view_draw(self, context, depsgraph):
+        if self.viewport is None:
+            return  # nothing synced (library missing): Blender shows the cleared view
+        self.viewport.draw(self, context, depsgraph)
 
     def _report(self, level, message):
         last_render.setdefault("messages", []).append((level, message))
@@ -78,7 +94,7 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         keep = {}
         pixels, stats = frame.render(data, camera, s, progress=self.update_progress, cancelled=self.test_break, keep=keep)
         last_render.update(keep, pixels=pixels, stats=stats, reports=list(data.reports), camera=camera, scene=data)
-        self.update_stats("EdgeLight", f"{stats.objects} objects, {stats.edges_drawn // max(stats.samples, 1)} edges")
+        self.update_stats("EdgeLight", f"{stats.objects} objects, {stats.edges_drawn} edges")
         return pixels
 
 

@@ -36,6 +36,7 @@ class MeshExtract:
     slot_shading: list                # slot -> materials.Shading
     edges: dict = field(default_factory=dict)  # slot -> EdgeSet
     info: dict = field(default_factory=dict)
+    edge_data: object = None                    # EdgeData
 
 
 @dataclass
@@ -137,20 +138,47 @@ def extract_mesh(name, mesh, materials, lib=None):
     slot_triangles = {int(s): order[tri_slot[order] == s] for s in np.unique(tri_slot)}
     out = MeshExtract(name, positions[tri_verts.reshape(-1)], np.ascontiguousarray(corner_nor, np.float32),
                       slot_triangles, shading, info=info)
-    out.edges = choose_edges(m, edges, positions, tri_edges, tri_slot, shading, sharp, bevel)
+    # The classification, kept so a material change can re-choose edges without a native call.
+    out.edge_data = EdgeData(m.edge_flags(), m.edge_angles(), m.edge_normals(), edges, positions,
+                             *_first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel)
+    out.edges = choose_edges(out.edge_data, shading)
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
     return out
 
 
-def choose_edges(m, edges, positions, tri_edges, tri_slot, shading, sharp, bevel):
+@dataclass
+class EdgeData:
+    """Per-edge classification of one mesh (numpy copies of the native results)."""
+    flags: np.ndarray
+    angles: np.ndarray
+    normals: np.ndarray
+    edges: np.ndarray
+    positions: np.ndarray
+    face_a: np.ndarray
+    face_b: np.ndarray
+    tri_slot: np.ndarray
+    sharp: np.ndarray
+    bevel: np.ndarray
+
+
+def rechoose_edges(extract):
+    return choose_edges(extract.edge_data, extract.slot_shading)
+
+
+def same_edges(a, b):
+    if a.keys() != b.keys():
+        return False
+    return all(len(a[k]) == len(b[k]) and np.array_equal(a[k].radius, b[k].radius) and np.array_equal(a[k].p0, b[k].p0)
+               for k in a)
+
+
+def choose_edges(d, shading):
     """Edges each material rounds. An edge between two materials is rounded when both enable
     rounding and either one's rule picks it; it takes the smaller radius and the shading of the
     material of its first face."""
-    flags = m.edge_flags()
-    angles = m.edge_angles()
-    normals = m.edge_normals()
-    face_a, face_b = _first_two_faces(tri_edges, len(edges))
+    flags, angles, normals, edges, positions = d.flags, d.angles, d.normals, d.edges, d.positions
+    face_a, face_b, tri_slot, sharp, bevel = d.face_a, d.face_b, d.tri_slot, d.sharp, d.bevel
     ok = ((flags & native.EDGE_MANIFOLD) != 0) & ((flags & native.EDGE_DEGENERATE) == 0) & (face_b >= 0)
     slot_a = np.where(face_a >= 0, tri_slot[np.maximum(face_a, 0)], 0)
     slot_b = np.where(face_b >= 0, tri_slot[np.maximum(face_b, 0)], 0)
@@ -178,7 +206,7 @@ def choose_edges(m, edges, positions, tri_edges, tri_slot, shading, sharp, bevel
     return out
 
 
-def _light(ob, matrix):
+def light_of(ob, matrix):
     data = ob.data
     kind = {'SUN': 0, 'POINT': 1, 'SPOT': 2, 'AREA': 3}.get(data.type)
     if kind is None:
@@ -211,7 +239,7 @@ def collect(depsgraph, lib=None):
     for inst in depsgraph.object_instances:
         ob = inst.object
         if ob.type == 'LIGHT':
-            light = _light(ob, inst.matrix_world)
+            light = light_of(ob, inst.matrix_world)
             if light:
                 lights.append(light)
             continue

@@ -35,6 +35,18 @@ void main()
   float dist = frame.eye.w > 0.5 ? length(V) : 1.0;
   float px_per_unit = frame.camera.x / max(dist, 1e-20);
   float width_px = edge_radius * length(edge_n1 - edge_n2) * px_per_unit;
+
+  /* Cull before any fragment runs (viewport.visible_edges counts the same tests): both faces
+   * turned away (judged at the edge's midpoint, the same for all four corners), or a weight
+   * that cannot reach one 8-bit step. */
+  vec3 mid = 0.5 * (w0 + w1);
+  vec3 Vm = frame.eye.w > 0.5 ? frame.eye.xyz - mid : -frame.view_dir.xyz;
+  float dist_m = frame.eye.w > 0.5 ? length(Vm) : 1.0;
+  float width_m = edge_radius * length(edge_n1 - edge_n2) * frame.camera.x / max(dist_m, 1e-20);
+  if ((dot(edge_n1, Vm) <= 0.0 && dot(edge_n2, Vm) <= 0.0) || tint.w * min(width_m, 1.0) < 1.0 / 255.0) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    return;
+  }
   float half_px = 0.5 * min(width_px, 4096.0) + 0.5 + 1.0 / 64.0;
 
   vec2 s = (corner.x < 0.5 ? s0 : s1) + across * corner.y * half_px;

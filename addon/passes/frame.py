@@ -107,6 +107,7 @@ class Stats:
     objects: int = 0
     edges_drawn: int = 0
     samples: int = 0
+    samples_requested: int = 0
 
 
 def _shading_uniforms(shader, s):
@@ -181,19 +182,10 @@ def read(texture, width, height):
     return np.asarray(buf, dtype=np.float32).reshape(height, width, 4)
 
 
-def render(scene, camera, settings, targets=None, gpu_meshes=None, progress=None, cancelled=None, keep=None):
-    """Draws `scene` from `camera`; returns ((h, w, 4) scene-linear float RGBA, Stats).
+def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=None):
+    """Draws `scene` from `camera` into targets.result (GPU only, nothing read back).
 
-    progress(fraction) and cancelled() are called between samples; `keep`, when a dict, receives
-    the last sample's surface, highlight and result buffers for inspection.
-    """
-    w, h = camera.width, camera.height
-    targets = targets or Targets(w, h)
-    if gpu_meshes is None:
-        gpu_meshes = {}
-        for inst in scene.instances:
-            if id(inst.mesh) not in gpu_meshes:
-                gpu_meshes[id(inst.mesh)] = batches.GpuMesh(inst.mesh)
+    progress(fraction) and cancelled() are called between samples."""
     full_screen = batches.fullscreen_batch()
     background = (*scene.ambient, 0.0 if settings.transparent else 1.0)
     stats = Stats(objects=len(scene.instances))
@@ -203,24 +195,43 @@ def render(scene, camera, settings, targets=None, gpu_meshes=None, progress=None
     for s in range(samples):
         if cancelled and cancelled():
             break
-        projection = jittered_projection(np.asarray(camera.projection, np.float64), w, h, *jitter(s))
+        projection = jittered_projection(np.asarray(camera.projection, np.float64), camera.width, camera.height, *jitter(s))
         data = frame_data(camera, projection, scene)
         ubo = gpu.types.GPUUniformBuf(gpu.types.Buffer('FLOAT', data.size, data))
         draw_surface(targets, scene, gpu_meshes, ubo)
-        if settings.highlights:
-            draw_highlights(targets, scene, gpu_meshes, ubo, stats)
-        else:
-            with targets.highlight_fb.bind():
-                targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
+        # The edge pass runs once, on the unjittered first sample: its coverage of the band is
+        # already box-filtered across the edge analytically, so later samples reuse it and only
+        # the surface is re-jittered (docs/addon.md).
+        if s == 0:
+            if settings.highlights:
+                draw_highlights(targets, scene, gpu_meshes, ubo, stats)
+            else:
+                with targets.highlight_fb.bind():
+                    targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
         draw_composite(targets, background, full_screen, 1.0 / samples)
         stats.samples += 1
         if progress:
             progress((s + 1) / samples)
+    stats.samples_requested = samples
+    return stats
+
+
+def render(scene, camera, settings, progress=None, cancelled=None, keep=None):
+    """Final render: draws and reads back ((h, w, 4) scene-linear float RGBA, Stats).
+
+    `keep`, when a dict, receives the last sample's surface, highlight and depth buffers."""
+    w, h = camera.width, camera.height
+    targets = Targets(w, h)
+    gpu_meshes = {}
+    for inst in scene.instances:
+        if id(inst.mesh) not in gpu_meshes:
+            gpu_meshes[id(inst.mesh)] = batches.GpuMesh(inst.mesh)
+    stats = draw(scene, camera, settings, targets, gpu_meshes, progress, cancelled)
+    pixels = read(targets.result, w, h)
+    if 0 < stats.samples < stats.samples_requested:  # cancelled: rescale what was accumulated
+        pixels *= stats.samples_requested / stats.samples
     if keep is not None:
         keep["surface"] = read(targets.surface_color, w, h)
         keep["highlight"] = read(targets.highlight, w, h)
         keep["depth"] = read(targets.surface_depth, w, h)
-    pixels = read(targets.result, w, h)
-    if 0 < stats.samples < samples:  # cancelled: rescale what was accumulated
-        pixels *= samples / stats.samples
     return pixels, stats

@@ -1,0 +1,247 @@
+"""Viewport (Rendered shading): the final render's passes drawn into the 3D view.
+
+Caches are keyed on what changed (depsgraph updates), so each kind of change costs only its own
+work: geometry -> that object's extraction, native classification and GPU batches; transform ->
+matrices; material -> shading (and the edge batch of an object whose chosen edges changed); view
+-> culling counts and a redraw; nothing -> the last image is drawn again, with no native call,
+no upload and no pass.
+"""
+from dataclasses import dataclass, field
+
+import bpy
+import numpy as np
+
+from . import native, scene_sync
+from .materials import shading_of
+from .passes import batches, frame
+
+# Below one 8-bit step an edge cannot change a pixel.
+MIN_WEIGHT = 1.0 / 255.0
+
+
+@dataclass
+class Counters:
+    updates: int = 0          # view_update calls
+    draws: int = 0            # view_draw calls
+    native_calls: int = 0     # calls into libedgelight (mesh builds)
+    uploads: int = 0          # GPU batches built
+    extracts: int = 0         # objects (re)read from Blender
+    passes: int = 0           # frames drawn with the passes (not a cached image)
+    cache_hits: int = 0       # draws that reused the last image
+    view_changes: int = 0
+    objects: int = 0
+    edges_drawn: int = 0
+    edges_culled: int = 0
+
+    def as_dict(self):
+        return dict(self.__dict__)
+
+
+# The most recent viewport state, for tests and the benchmark script.
+last_state = None
+
+
+@dataclass
+class ObjectCache:
+    extract: object                    # scene_sync.MeshExtract
+    materials: list                    # the material per slot at extraction
+    gpu: object = None                 # batches.GpuMesh, built in view_draw
+    cull: dict = field(default_factory=dict)
+
+
+class ViewportState:
+    def __init__(self):
+        self.objects = {}              # object name -> ObjectCache (None: skipped)
+        self.instances = []
+        self.lights = []
+        self.ambient = (0.0, 0.0, 0.0)
+        self.reports = []
+        self.targets = None
+        self.view_key = None
+        self.image_valid = False
+        self.signature = None
+        self.counters = Counters()
+
+    # ---- view_update -------------------------------------------------------------------
+    def sync(self, depsgraph, lib):
+        self.counters.updates += 1
+        geometry, shading = set(), False
+        for update in depsgraph.updates:
+            idb = update.id
+            if isinstance(idb, bpy.types.Object) and update.is_updated_geometry:
+                geometry.add(idb.name)
+            elif isinstance(idb, bpy.types.Material):
+                shading = True
+        instances, lights, seen = [], [], set()
+        for inst in depsgraph.object_instances:
+            ob = inst.object
+            if ob.type == 'LIGHT':
+                light = scene_sync.light_of(ob, inst.matrix_world)
+                if light:
+                    lights.append(light)
+                continue
+            if ob.type not in scene_sync.GEOMETRY_TYPES:
+                continue
+            name = ob.name
+            if name not in seen:
+                seen.add(name)
+                if name not in self.objects or name in geometry:
+                    self.objects[name] = self._extract(ob, lib)
+                elif shading and self.objects[name] is not None:
+                    self._reshade(ob, self.objects[name])
+            cache = self.objects.get(name)
+            if cache is not None:
+                instances.append(scene_sync.Instance(cache.extract, np.array(inst.matrix_world, dtype=np.float32)))
+        removed = [n for n in self.objects if n not in seen]
+        for name in removed:
+            del self.objects[name]  # deleted objects: their batches go with them
+        self.instances, self.lights = instances, lights
+        self.ambient = scene_sync.world_ambient(depsgraph.scene)
+        # Updates that change nothing drawn (selection, UI, colour management, which the display
+        # shader applies) keep the last image.
+        signature = scene_signature(self, depsgraph.scene)
+        if geometry or shading or removed or signature != self.signature:
+            self.image_valid = False
+        self.signature = signature
+
+    def _extract(self, ob, lib):
+        self.counters.extracts += 1
+        mesh = None
+        try:
+            mesh = ob.to_mesh()
+            if mesh is None:
+                return None
+            materials = [slot.material for slot in ob.material_slots]
+            self.counters.native_calls += 1
+            return ObjectCache(scene_sync.extract_mesh(ob.name, mesh, materials, lib=lib), materials)
+        except scene_sync.SkipObject as e:
+            self.reports.append(str(e))
+            return None
+        finally:
+            if mesh is not None:
+                ob.to_mesh_clear()
+
+    def _reshade(self, ob, cache):
+        """Material settings changed: new uniforms; new edge batches only where the chosen edges
+        changed. No native call: the classification is kept in the extract."""
+        ex = cache.extract
+        ex.slot_shading = [shading_of(m) for m in cache.materials] or [shading_of(None)]
+        edges = scene_sync.rechoose_edges(ex)
+        if not scene_sync.same_edges(edges, ex.edges):
+            ex.edges = edges
+            cache.gpu = None
+
+    # ---- view_draw ---------------------------------------------------------------------
+    def draw(self, engine, context, depsgraph):
+        self.counters.draws += 1
+        region, rv3d = context.region, context.region_data
+        width, height = region.width, region.height
+        camera = viewport_camera(rv3d, width, height)
+        key = (width, height, tuple(np.asarray(camera.view).ravel()), tuple(np.asarray(camera.projection).ravel()))
+        settings = depsgraph.scene.edgelight
+        fresh = False
+        if self.targets is None or self.targets.size != (width, height):
+            self.targets = frame.Targets(width, height)
+            self.image_valid = False
+        gpu_meshes = {}
+        for cache in self._caches():
+            if cache.gpu is None:
+                cache.gpu = batches.GpuMesh(cache.extract)
+                self.counters.uploads += len(cache.gpu.surface) + len(cache.gpu.edges)
+                fresh = True
+            gpu_meshes[id(cache.extract)] = cache.gpu
+        if key != self.view_key:
+            self.counters.view_changes += 1
+            self.view_key = key
+            self.image_valid = False
+            self._count_culled(camera)
+        if self.image_valid and not fresh:
+            self.counters.cache_hits += 1
+        else:
+            scene = scene_sync.SceneData(self.instances, self.lights, self.ambient, self.reports)
+            s = frame.Settings(samples=settings.viewport_samples, highlights=settings.highlights,
+                               transparent=depsgraph.scene.render.film_transparent)
+            frame.draw(scene, camera, s, self.targets, gpu_meshes)
+            self.counters.passes += 1
+            self.image_valid = True
+        self.counters.objects = len(self.instances)
+        blit(engine, depsgraph.scene, self.targets.result)
+        engine.update_stats("EdgeLight", self.summary())
+
+    def _caches(self):
+        seen = set()
+        for inst in self.instances:
+            if id(inst.mesh) in seen:
+                continue
+            seen.add(id(inst.mesh))
+            yield next(c for c in self.objects.values() if c is not None and c.extract is inst.mesh)
+
+    def _count_culled(self, camera):
+        """What the edge shader culls (both faces turned away, outside the view, W below one
+        8-bit step), counted on the CPU once per view for the statistics."""
+        drawn = culled = 0
+        for inst in self.instances:
+            for slot, edges in inst.mesh.edges.items():
+                keep = visible_edges(edges, inst.matrix, camera, inst.mesh.slot_shading[slot].K)
+                drawn += int(keep.sum())
+                culled += int(len(keep) - keep.sum())
+        self.counters.edges_drawn, self.counters.edges_culled = drawn, culled
+
+    def summary(self):
+        c = self.counters
+        return (f"{c.objects} objects | edges {c.edges_drawn} drawn, {c.edges_culled} culled | "
+                f"cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}")
+
+
+def scene_signature(state, scene):
+    """Everything besides geometry and materials that the image depends on."""
+    s = scene.edgelight
+    return (tuple((id(i.mesh), i.matrix.tobytes()) for i in state.instances),
+            tuple((l.kind, l.color, l.position, l.direction, l.spot_cos, l.spot_blend) for l in state.lights),
+            state.ambient, s.viewport_samples, s.highlights, scene.render.film_transparent)
+
+
+def viewport_camera(rv3d, width, height):
+    view = np.array(rv3d.view_matrix, dtype=np.float64)
+    world = np.linalg.inv(view)
+    forward = -world[:3, 2] / np.linalg.norm(world[:3, 2])
+    return frame.Camera(view=view, projection=np.array(rv3d.window_matrix, dtype=np.float64),
+                        eye=tuple(world[:3, 3]), view_dir=tuple(forward),
+                        orthographic=not rv3d.is_perspective, width=width, height=height)
+
+
+def visible_edges(edges, matrix, camera, K):
+    """Boolean per edge: the edge shader would draw it (same tests as edge_highlight.vert)."""
+    m = np.asarray(matrix, np.float64)
+    p0 = edges.p0 @ m[:3, :3].T + m[:3, 3]
+    p1 = edges.p1 @ m[:3, :3].T + m[:3, 3]
+    nm = np.linalg.inv(m[:3, :3]).T
+    n1, n2 = edges.n1 @ nm.T, edges.n2 @ nm.T
+    mid = 0.5 * (p0 + p1)
+    to_eye = (np.asarray(camera.eye) - mid) if not camera.orthographic else np.repeat(-np.asarray(camera.view_dir)[None], len(mid), 0)
+    front = (np.einsum("ij,ij->i", n1, to_eye) > 0) | (np.einsum("ij,ij->i", n2, to_eye) > 0)
+    clip_m = camera.projection @ camera.view
+    c0 = np.c_[p0, np.ones(len(p0))] @ clip_m.T
+    c1 = np.c_[p1, np.ones(len(p1))] @ clip_m.T
+    outside = np.zeros(len(p0), bool)
+    for axis in range(3):
+        outside |= (c0[:, axis] > c0[:, 3]) & (c1[:, axis] > c1[:, 3])
+        outside |= (c0[:, axis] < -c0[:, 3]) & (c1[:, axis] < -c1[:, 3])
+    dist = np.linalg.norm(to_eye, axis=1) if not camera.orthographic else 1.0
+    scale = np.cbrt(abs(np.linalg.det(m[:3, :3])))
+    n1u = n1 / np.maximum(np.linalg.norm(n1, axis=1, keepdims=True), 1e-30)
+    n2u = n2 / np.maximum(np.linalg.norm(n2, axis=1, keepdims=True), 1e-30)
+    width_px = edges.radius * scale * np.linalg.norm(n1u - n2u, axis=1) * camera.px_per_unit / dist
+    return front & ~outside & (K * np.minimum(width_px, 1.0) >= MIN_WEIGHT)
+
+
+def blit(engine, scene, texture):
+    """Draws the scene-linear result through Blender's display transform (view transform,
+    look, exposure), premultiplied over the viewport, as Blender's RenderEngine example does."""
+    import gpu
+    from gpu_extras.presets import draw_texture_2d
+    gpu.state.blend_set('ALPHA_PREMULT')
+    engine.bind_display_space_shader(scene)
+    draw_texture_2d(texture, (0, 0), texture.width, texture.height)
+    engine.unbind_display_space_shader()
+    gpu.state.blend_set('NONE')

@@ -1,0 +1,177 @@
+"""A scripted UI session under xvfb-run, for the viewport tests (not run by runner.py):
+
+    xvfb-run -s "-screen 0 1400x1000x24" blender --factory-startup --addons edgelight \
+        blend_samples/cube.blend --python tests/blender/viewport_session.py -- OUT_DIR
+
+Steps run from a timer so Blender's event loop draws between them. Prints a pass/fail line
+per check and 'viewport: N passed, N failed'; exits 1 on any failure.
+"""
+import json
+import os
+import sys
+import traceback
+
+import bpy
+import numpy as np
+
+ARGS = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+OUT = ARGS[0] if ARGS else "/tmp/edgelight_viewport"
+os.makedirs(OUT, exist_ok=True)
+A, B = np.array((-1.0, -1.0, 1.0)), np.array((1.0, -1.0, 1.0))  # the cube's glinting edge
+results = []
+
+
+def check(name, ok, detail=""):
+    results.append((name, bool(ok), detail))
+    print(f"{'PASS' if ok else 'FAIL'} {name} {detail}", flush=True)
+
+
+def view3d():
+    for window in bpy.context.window_manager.windows:
+        for area in window.screen.areas:
+            if area.type == 'VIEW_3D':
+                region = next(r for r in area.regions if r.type == 'WINDOW')
+                return window, area, region
+    raise RuntimeError("no 3D view")
+
+
+def counters():
+    import edgelight
+    state = edgelight.viewport.last_state
+    return state.counters.as_dict() if state else {}
+
+
+def redraw():
+    _, area, _ = view3d()
+    area.tag_redraw()
+
+
+def screenshot(name):
+    window, area, region = view3d()
+    path = os.path.join(OUT, name + ".png")
+    with bpy.context.temp_override(window=window, area=area, region=region):
+        bpy.ops.screen.screenshot(filepath=path)
+    img = bpy.data.images.load(path)
+    w, h = img.size
+    px = np.array(img.pixels[:], dtype=np.float32).reshape(h, w, img.channels)
+    bpy.data.images.remove(img)
+    return px, path
+
+
+def to_window_pixels(points):
+    """World points -> screenshot pixels (bottom-left origin), through the 3D view's matrices."""
+    _, _, region = view3d()
+    rv3d = region.data
+    m = np.array(rv3d.perspective_matrix, dtype=np.float64)
+    p = np.c_[np.asarray(points, np.float64), np.ones(len(points))] @ m.T
+    ndc = p[:, :2] / p[:, 3:4]
+    return (ndc * 0.5 + 0.5) * np.array([region.width, region.height]) + np.array([region.x, region.y])
+
+
+def steps():
+    window, area, region = view3d()
+    area.spaces.active.shading.type = 'RENDERED'
+    area.spaces.active.overlay.show_overlays = False
+    region.data.view_perspective = 'CAMERA'
+    with bpy.context.temp_override(window=window, area=area, region=region):
+        bpy.ops.view3d.view_center_camera()
+    bpy.context.scene.view_settings.view_transform = 'Standard'
+    yield 1.5
+    redraw()
+    yield 1.0
+
+    # 1. Rendered shading shows the highlight along the cube's glinting edge.
+    px, path = screenshot("rendered")
+    lum = px[..., :3] @ np.array([0.2126, 0.7152, 0.0722])
+    ts = np.linspace(0.2, 0.8, 9)
+    line = to_window_pixels(A[None] + ts[:, None] * (B - A)[None])
+    s0, s1 = to_window_pixels([A, B])
+    d = (s1 - s0) / np.linalg.norm(s1 - s0)
+    n = np.array([-d[1], d[0]])
+    def at(xy):
+        x, y = np.floor(xy).astype(int).T
+        return lum[np.clip(y, 0, lum.shape[0] - 1), np.clip(x, 0, lum.shape[1] - 1)]
+    glint = np.max([at(line + o * n) for o in np.arange(-2.0, 2.5, 0.5)], axis=0)
+    faces = np.maximum(at(line + 10 * n), at(line - 10 * n))
+    check("screenshot shows the glint brighter than both faces", (glint > faces + 0.03).all(),
+          f"{path}: margin min {np.min(glint - faces):.3f}")
+    c0 = counters()
+    check("viewport drew with EdgeLight", c0.get("passes", 0) >= 1 and c0.get("edges_drawn", 0) > 0, json.dumps(c0))
+
+    # 2. A redraw with nothing changed: no native call, no upload, no pass.
+    redraw()
+    yield 0.5
+    c1 = counters()
+    check("static redraw: zero native calls", c1["native_calls"] == c0["native_calls"])
+    check("static redraw: zero uploads", c1["uploads"] == c0["uploads"])
+    check("static redraw: cache hit, no pass", c1["cache_hits"] > c0["cache_hits"] and c1["passes"] == c0["passes"],
+          json.dumps(c1))
+
+    # 3. Moving the view: view-dependent work only.
+    region.data.view_perspective = 'PERSP'
+    region.data.view_distance *= 1.2
+    redraw()
+    yield 0.5
+    c2 = counters()
+    check("moved view: no native call, no upload", c2["native_calls"] == c1["native_calls"] and c2["uploads"] == c1["uploads"])
+    check("moved view: view-dependent pass", c2["view_changes"] > c1["view_changes"] and c2["passes"] > c1["passes"],
+          json.dumps(c2))
+
+    # 4. Editing one mesh rebuilds only that object.
+    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(4.0, 0.0, 0.0))
+    yield 0.5
+    redraw()
+    yield 0.5
+    c3 = counters()
+    cube = bpy.data.objects["Cube"]
+    cube.data.vertices[0].co.z -= 0.2
+    cube.data.update()
+    yield 0.5
+    redraw()
+    yield 0.5
+    c4 = counters()
+    check("edited mesh: one object re-extracted", c4["extracts"] - c3["extracts"] == 1, f"{c3['extracts']} -> {c4['extracts']}")
+    check("edited mesh: one native build", c4["native_calls"] - c3["native_calls"] == 1)
+    check("edited mesh: only its batches uploaded", 0 < c4["uploads"] - c3["uploads"] <= 2, f"{c3['uploads']} -> {c4['uploads']}")
+
+    # 5. A final render started from the UI as an artist would (a render job with its own GPU
+    # context, not -b).
+    import edgelight
+    edgelight.engine.last_render.clear()
+    bpy.context.scene.edgelight.samples = 2
+    with bpy.context.temp_override(window=window, area=area, region=region):
+        bpy.ops.render.render('INVOKE_DEFAULT')
+    for _ in range(120):
+        yield 0.5
+        if "stats" in edgelight.engine.last_render and not bpy.app.is_job_running('RENDER'):
+            break
+    rec = edgelight.engine.last_render
+    hl = rec.get("highlight")
+    check("F12 from the UI completes with highlights", hl is not None and (hl[..., 3] > 0).sum() > 100,
+          f"edges drawn {getattr(rec.get('stats'), 'edges_drawn', None)}")
+
+
+def run():
+    gen = steps()
+
+    def tick():
+        try:
+            return next(gen)
+        except StopIteration:
+            finish()
+        except Exception:
+            traceback.print_exc()
+            check("session ran to the end", False)
+            finish()
+        return None
+
+    bpy.app.timers.register(tick, first_interval=1.0)
+
+
+def finish():
+    failed = sum(1 for _, ok, _ in results if not ok)
+    print(f"viewport: {len(results) - failed} passed, {failed} failed", flush=True)
+    os._exit(1 if failed or not results else 0)
+
+
+run()
