@@ -1,0 +1,148 @@
+"""view_draw time in the 3D view (Rendered shading), one UI session under xvfb-run:
+
+    xvfb-run -a -s "-screen 0 1400x1000x24" blender --factory-startup --addons edgelight \
+        --python bench/viewport_bench.py -- out/viewport_bench.md
+
+Scenes: the three samples, and generated scenes of 100k and 1M triangles (grids of cubes, every
+cube edge rounded). Modes: 'orbit' turns the view 1 degree before every draw (a new image each
+time), with highlights off (surface only) and on; 'static' redraws an unchanged view (the cached
+image). Times come from bpy.ops.wm.redraw_timer, best of REPEAT runs.
+"""
+import math
+import os
+import sys
+import time
+
+import bpy
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ARGS = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+OUT = ARGS[0] if ARGS else os.path.join(ROOT, "out", "viewport_bench.md")
+FRAMES = 10
+REPEAT = 3
+rows = []
+
+
+def view3d():
+    window = bpy.context.window_manager.windows[0]
+    area = next(a for a in window.screen.areas if a.type == 'VIEW_3D')
+    region = next(r for r in area.regions if r.type == 'WINDOW')
+    return window, area, region
+
+
+def cube_grid(count):
+    """One mesh of `count` unit cubes on a grid (12 triangles, 12 creases each)."""
+    side = int(math.ceil(count ** (1.0 / 3.0)))
+    idx = np.arange(count)
+    centres = np.c_[idx % side, (idx // side) % side, idx // (side * side)].astype(np.float32) * 2.0
+    corners = np.array([(x, y, z) for z in (-.5, .5) for y in (-.5, .5) for x in (-.5, .5)], np.float32)
+    quads = np.array([(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)])
+    verts = (centres[:, None, :] + corners[None]).reshape(-1, 3)
+    faces = (quads[None] + 8 * idx[:, None, None]).reshape(-1, 4)
+    me = bpy.data.meshes.new("Grid")
+    me.vertices.add(len(verts))
+    me.vertices.foreach_set("co", verts.ravel())
+    me.loops.add(faces.size)
+    me.loops.foreach_set("vertex_index", faces.ravel())
+    me.polygons.add(len(faces))
+    me.polygons.foreach_set("loop_start", np.arange(0, faces.size, 4))
+    me.polygons.foreach_set("loop_total", np.full(len(faces), 4))
+    me.update(calc_edges=True)
+    return me, side * 2.0
+
+
+def grid_scene(triangles):
+    bpy.ops.wm.open_mainfile(filepath=os.path.join(ROOT, "blend_samples", "cube.blend"))
+    cube = bpy.data.objects["Cube"]
+    mat = cube.active_material
+    bpy.data.objects.remove(cube)
+    me, size = cube_grid(triangles // 12)
+    me.materials.append(mat)
+    ob = bpy.data.objects.new("Grid", me)
+    bpy.context.scene.collection.objects.link(ob)
+    ob.location = (-size / 2, -size / 2, -size / 2)
+    return size
+
+
+def draw_ms(orbit):
+    window, area, region = view3d()
+    rv3d = region.data
+    best = float("inf")
+    for _ in range(REPEAT):
+        t0 = time.perf_counter()
+        for _ in range(FRAMES):
+            if orbit:
+                rv3d.view_rotation = rv3d.view_rotation @ __import__("mathutils").Quaternion((0, 0, 1), math.radians(1.0))
+            with bpy.context.temp_override(window=window, area=area, region=region):
+                bpy.ops.wm.redraw_timer(type='DRAW', iterations=1)
+        best = min(best, (time.perf_counter() - t0) / FRAMES * 1000.0)
+    return best
+
+
+def measure(name, distance=None):
+    window, area, region = view3d()
+    space = area.spaces.active
+    space.shading.type = 'RENDERED'
+    space.overlay.show_overlays = False
+    rv3d = region.data
+    rv3d.view_perspective = 'PERSP'
+    if distance:
+        rv3d.view_location = (0, 0, 0)
+        rv3d.view_distance = distance
+    scene = bpy.context.scene
+    scene.edgelight.viewport_samples = 1
+    result = {}
+    for label, highlights, orbit in (("surface only, orbit", False, True), ("surface + highlights, orbit", True, True),
+                                     ("static redraw (cache hit)", True, False)):
+        scene.edgelight.highlights = highlights
+        draw_ms(True)  # warm up: extraction, batches, shaders
+        result[label] = draw_ms(orbit)
+    import edgelight
+    c = edgelight.viewport.last_state.counters
+    tris = sum(len(inst.mesh.corner_pos) // 3 for inst in edgelight.viewport.last_state.instances)
+    rows.append((name, tris, c.edges_drawn, c.edges_culled, result))
+    print(name, tris, result, flush=True)
+
+
+def steps():
+    for name in ("cube", "fandisk", "prop"):
+        bpy.ops.wm.open_mainfile(filepath=os.path.join(ROOT, "blend_samples", name + ".blend"))
+        yield
+        measure(name)
+    for tris in (100_000, 1_000_000):
+        size = grid_scene(tris)
+        yield
+        measure(f"{tris // 1000}k-triangle cube grid", distance=size * 2.2)
+    _, _, region = view3d()
+    lines = [f"Blender {bpy.app.version_string}, 3D view {region.width}x{region.height} px, Rendered shading, "
+             f"1 viewport sample; ms per view_draw, best of {REPEAT} runs of {FRAMES} draws.", "",
+             "| scene | triangles | edges drawn / culled | surface only, orbit | surface + highlights, orbit | static redraw | highlights add | static / surface only |",
+             "|---|---|---|---|---|---|---|---|"]
+    for name, tris, drawn, culled, r in rows:
+        s, h, st = r["surface only, orbit"], r["surface + highlights, orbit"], r["static redraw (cache hit)"]
+        lines.append(f"| {name} | {tris:,} | {drawn:,} / {culled:,} | {s:.1f} | {h:.1f} | {st:.1f} | {100 * (h / s - 1):.0f}% | {st / s:.2f} |")
+    os.makedirs(os.path.dirname(OUT), exist_ok=True)
+    with open(OUT, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines), flush=True)
+
+
+def main():
+    gen = steps()
+
+    def tick():
+        try:
+            next(gen)
+            return 0.5
+        except StopIteration:
+            os._exit(0)
+        except Exception:
+            import traceback
+            traceback.print_exc()
+            os._exit(1)
+
+    bpy.app.timers.register(tick, first_interval=1.0)
+
+
+main()
