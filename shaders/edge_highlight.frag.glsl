@@ -24,30 +24,31 @@ void main()
     discard;
   }
 
-  ElArc g = el_arc(edge_dir, edge_n1, edge_n2, V);
-  float s = sqrt(dot(g.view, g.view)); /* |E x V| */
-  if (!(g.width > 0.0) || !(s > 0.0)) {
+  /* Short edges come shaded from the vertex shader; long ones are shaded here, per pixel. */
+  bool per_edge = edge_color.w > 0.5;
+  ElArc g;
+  float width, s;
+  if (per_edge) {
+    width = edge_arc.x;
+    s = edge_arc.y;
+  }
+  else {
+    g = el_arc(edge_dir, edge_n1, edge_n2, V);
+    width = g.width;
+    s = sqrt(dot(g.view, g.view)); /* |E x V| */
+  }
+  if (!(width > 0.0) || !(s > 0.0)) {
     discard;
   }
 
   /* Coverage of the pixel by the band of projected width w (pixels) around the edge line. */
-  float w_px = edge_radius * g.width / world_per_px;
+  float w_px = edge_radius * width / world_per_px;
   float cover = clamp(min(across + 0.5, 0.5 * w_px) - max(across - 0.5, -0.5 * w_px), 0.0, 1.0);
   float W = clamp(tint.w * cover, 0.0, 1.0) * el_axial_ramp(s);
   if (!(W > 0.0)) {
     discard;
   }
 
-  float n = spec_color.w;
-  vec3 col = frame.ambient.rgb * base_color.rgb;
-  int count = int(frame.camera.y + 0.5);
-  for (int i = 0; i < count; i++) {
-    vec3 L, E;
-    light_at(i, X, L, E);
-    vec3 H = el_safe_normalize(L + V);
-    float spec = el_arc_mean(g, H, edge_dir, n);
-    float diff = el_arc_mean(g, L, edge_dir, 1.0);
-    col += E * (base_color.rgb * (diff / 3.14159265) + tint.rgb * spec_color.rgb * blinn_norm(n) * spec);
-  }
+  vec3 col = per_edge ? edge_color.rgb : el_edge_colour(g, X, V, edge_dir);
   out_color = vec4(col * W, W);
 }

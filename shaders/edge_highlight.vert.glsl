@@ -49,6 +49,16 @@ void main()
   }
   float half_px = 0.5 * min(width_px, 4096.0) + 0.5 + 1.0 / 64.0;
 
+  /* Short edges: shade once, at the midpoint (all four corners compute the same colour). */
+  edge_color = vec4(0.0);
+  edge_arc = vec2(0.0);
+  if (len < EL_SHADE_PER_EDGE_BELOW_PX) {
+    vec3 Vu = el_safe_normalize(Vm);
+    ElArc g = el_arc(edge_dir, edge_n1, edge_n2, Vu);
+    edge_color = vec4(el_edge_colour(g, mid, Vu, edge_dir), 1.0);
+    edge_arc = vec2(g.width, sqrt(dot(g.view, g.view)));  /* visible width, |E x V| */
+  }
+
   vec2 s = (corner.x < 0.5 ? s0 : s1) + across * corner.y * half_px;
   edge_point = world;
   gl_Position = vec4((s / frame.viewport.xy * 2.0 - 1.0) * c.w, c.z, c.w);

@@ -74,5 +74,43 @@ class ShaderMatchesReference(unittest.TestCase):
         self.assertLess(worst_w, 1e-3)  # measured: 2e-5
 
 
+class ShortEdgesMatchReference(unittest.TestCase):
+    def test_edges_under_16_px_carry_the_midpoint_colour(self):
+        """Short edges are shaded once in the vertex shader, at their midpoint."""
+        native = helpers.addon().native
+        helpers.open_sample("cube")
+        bpy.data.materials["Cube"].edgelight.radius = 0.2  # wide enough to cover whole pixels
+        rec = helpers.render(resolution=(48, 36))
+        cam, scene, hl = rec["camera"], rec["scene"], rec["highlight"]
+        s0, s1 = helpers.project(rec, [A, B])
+        self.assertLess(np.linalg.norm(s1 - s0), 16.0, "the edge is short on screen")
+        shading, light = scene.instances[0].mesh.slot_shading[0], scene.lights[0]
+        mid = 0.5 * (A + B)
+        inp = native.HighlightInput()
+        inp.point[:] = mid.tolist()
+        inp.edge_dir[:] = (B - A).tolist()
+        inp.n1[:], inp.n2[:] = N1, N2
+        inp.eye[:] = list(cam.eye)
+        inp.projection = native.PERSPECTIVE
+        inp.light[:] = [-c for c in light.direction]
+        inp.shininess, inp.radius, inp.K = shading.shininess, shading.radius, cam.px_per_unit
+        ref = native.highlight_reference(inp)
+        expected = (np.array(scene.ambient) * shading.base_color
+                    + np.array(light.color) * (np.array(shading.base_color) * ref.diffuse / math.pi
+                                               + np.array(shading.tint) * shading.spec_color
+                                               * blinn_norm(shading.shininess) * ref.specular))
+        d = (s1 - s0) / np.linalg.norm(s1 - s0)
+        nrm = np.array([-d[1], d[0]])
+        checked = 0
+        for y, x in zip(*np.nonzero(hl[..., 3] > 0.5)):
+            pc = np.array([x + 0.5, y + 0.5])
+            u = np.dot(pc - s0, d) / np.linalg.norm(s1 - s0)
+            if 0.3 < u < 0.7 and abs(np.dot(pc - s0, nrm)) < 0.5:
+                got = hl[y, x, :3] / hl[y, x, 3]
+                self.assertLess(np.max(np.abs(got - expected)) / np.max(expected), RELATIVE_TOLERANCE, (x, y, got, expected))
+                checked += 1
+        self.assertGreater(checked, 2)
+
+
 if __name__ == "__main__":
     unittest.main()

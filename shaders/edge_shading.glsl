@@ -1,0 +1,22 @@
+/* Colour of a rounded edge at world point X seen along unit V: ambient plus, per light, the
+ * diffuse and specular arc means (highlight_arc.glsl). Shared by the vertex shader (short edges,
+ * shaded once at their midpoint) and the fragment shader (long edges, shaded per pixel). */
+vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
+{
+  float n = spec_color.w;
+  vec3 col = frame.ambient.rgb * base_color.rgb;
+  int count = int(frame.camera.y + 0.5);
+  for (int i = 0; i < count; i++) {
+    vec3 L, E;
+    light_at(i, X, L, E);
+    vec3 H = el_safe_normalize(L + V);
+    float spec = el_arc_mean(g, H, edge, n);
+    float diff = el_arc_mean(g, L, edge, 1.0);
+    col += E * (base_color.rgb * (diff / 3.14159265) + tint.rgb * spec_color.rgb * blinn_norm(n) * spec);
+  }
+  return col;
+}
+
+/* Edges shorter than this on screen are shaded once per edge: their colour barely changes
+ * along them, and per-pixel shading cost most of the pass on dense meshes. */
+#define EL_SHADE_PER_EDGE_BELOW_PX 16.0
