@@ -49,10 +49,13 @@ void main()
   }
   float half_px = 0.5 * min(width_px, 4096.0) + 0.5 + 1.0 / 64.0;
 
-  /* Short edges: shade once, at the midpoint (all four corners compute the same colour). */
+  /* Short edges: shaded once, at the midpoint, by corners 0 and 3 only: both triangles start at
+   * 0 and end at 3, so one of them provides the flat outputs whatever the backend's provoking
+   * vertex convention (first or last). */
   edge_color = vec4(0.0);
   edge_arc = vec2(0.0);
-  if (len < EL_SHADE_PER_EDGE_BELOW_PX) {
+  bool provoking = (corner.x < 0.5 && corner.y < 0.0) || (corner.x > 0.5 && corner.y > 0.0);
+  if (len < EL_SHADE_PER_EDGE_BELOW_PX && provoking) {
     vec3 Vu = el_safe_normalize(Vm);
     ElArc g = el_arc(edge_dir, edge_n1, edge_n2, Vu);
     edge_color = vec4(el_edge_colour(g, mid, Vu, edge_dir), 1.0);

@@ -25,9 +25,12 @@ def surface_batches(extract):
     return out
 
 
-# Corner table of an edge quad: (end, side) for its 4 vertices, two triangles.
+# Corner table of an edge quad: (end, side) for its 4 vertices, two triangles. Both triangles
+# start at corner 0 and end at corner 3, so whichever vertex provides flat varyings (first or
+# last, by backend: 3.4's OpenGL uses the last) it is 0 or 3, and only those two corners shade a
+# short edge (edge_highlight.vert.glsl).
 _QUAD_CORNERS = np.array([[0, -1], [0, 1], [1, -1], [1, 1]], dtype=np.float32)
-_QUAD_TRIS = np.array([0, 1, 2, 2, 1, 3], dtype=np.int32)
+_QUAD_TRIS = np.array([0, 1, 3, 0, 2, 3], dtype=np.int32)
 
 
 def edge_batches(extract):
