@@ -5,11 +5,10 @@
  * and no other does. */
 void main()
 {
-  mat3 nmat = transpose(inverse(mat3(model)));
   vec3 w0 = (model * vec4(p0, 1.0)).xyz;
   vec3 w1 = (model * vec4(p1, 1.0)).xyz;
-  edge_n1 = normalize(nmat * n1);
-  edge_n2 = normalize(nmat * n2);
+  edge_n1 = el_transform_normal(model, n1);
+  edge_n2 = el_transform_normal(model, n2);
   edge_dir = w1 - w0;
   edge_radius = corner.z * length(mat3(model) * normalize(vec3(1.0)));
 

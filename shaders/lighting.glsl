@@ -32,3 +32,12 @@ float blinn_norm(float n)
 {
   return (n + 8.0) / (8.0 * 3.14159265);
 }
+
+/* Normals transform by the inverse transpose of the linear part; the cofactor matrix is that
+ * times det, so three cross products and det's sign give the direction without an inverse. */
+vec3 el_transform_normal(mat4 m, vec3 n)
+{
+  vec3 c0 = m[0].xyz, c1 = m[1].xyz, c2 = m[2].xyz;
+  mat3 cof = mat3(cross(c1, c2), cross(c2, c0), cross(c0, c1));
+  return normalize(cof * n) * sign(dot(c0, cross(c1, c2)));
+}
