@@ -86,6 +86,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             return None
         self.update_stats("EdgeLight", "Gathering scene")
         data = scene_sync.collect(depsgraph, lib=lib)
+        if len(data.lights) > frame.MAX_LIGHTS:
+            data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
         for line in data.reports:
             self._report('WARNING', f"EdgeLight: {line}")
         settings = depsgraph.scene.edgelight

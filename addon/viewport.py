@@ -95,6 +95,10 @@ class ViewportState:
         removed = [n for n in self.objects if n not in seen]
         for name in removed:
             del self.objects[name]  # deleted objects: their batches go with them
+        if len(lights) > frame.MAX_LIGHTS:
+            engine_note = f"{len(lights)} lights; the {frame.MAX_LIGHTS} first are used"
+            if engine_note not in self.reports:
+                self.reports.append(engine_note)
         self.instances, self.lights = instances, lights
         self.ambient = scene_sync.world_ambient(depsgraph.scene)
         # Updates that change nothing drawn (selection, UI, colour management, which the display
@@ -166,15 +170,16 @@ class ViewportState:
             self.image_valid = True
         self.counters.objects = len(self.instances)
         blit(engine, depsgraph.scene, self.targets.result)
-        engine.update_stats("EdgeLight", self.summary())
+        engine.update_stats("EdgeLight", self.summary() + (f" | {self.reports[-1]}" if self.reports else ""))
 
     def _caches(self):
+        """The caches of the drawn meshes, each once (instances share one)."""
+        by_extract = {id(c.extract): c for c in self.objects.values() if c is not None}
         seen = set()
         for inst in self.instances:
-            if id(inst.mesh) in seen:
-                continue
-            seen.add(id(inst.mesh))
-            yield next(c for c in self.objects.values() if c is not None and c.extract is inst.mesh)
+            if id(inst.mesh) not in seen:
+                seen.add(id(inst.mesh))
+                yield by_extract[id(inst.mesh)]
 
     def _count_culled(self, camera):
         """What the edge shader culls (both faces turned away, outside the view, W below one

@@ -89,3 +89,16 @@ class Lights(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class TooManyLights(unittest.TestCase):
+    def test_lights_past_the_limit_are_reported(self):
+        helpers.open_sample("cube")
+        for i in range(20):
+            light = bpy.data.lights.new(f"P{i}", 'POINT')
+            ob = bpy.data.objects.new(f"P{i}", light)
+            ob.location = (0.0, -5.0 - i, 2.0)
+            bpy.context.scene.collection.objects.link(ob)
+        rec = helpers.render(resolution=(64, 48))
+        text = " | ".join(m for _, m in rec.get("messages", []))
+        self.assertIn("21 lights; the 16 first are used", text)
