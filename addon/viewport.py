@@ -46,7 +46,7 @@ class ObjectCache:
     extract: object                    # scene_sync.MeshExtract
     materials: list                    # the material per slot at extraction
     gpu: object = None                 # batches.GpuMesh, built in view_draw
-    cull: dict = field(default_factory=dict)
+    edges_stale: bool = False          # the chosen edges changed: rebuild the edge batches only
 
 
 class ViewportState:
@@ -70,8 +70,8 @@ class ViewportState:
             idb = update.id
             if isinstance(idb, bpy.types.Object) and update.is_updated_geometry:
                 geometry.add(idb.name)
-            elif isinstance(idb, bpy.types.Material):
-                shading = True
+            elif isinstance(idb, bpy.types.Material) or (isinstance(idb, bpy.types.Object) and update.is_updated_shading):
+                shading = True  # a material's settings, or which material a slot holds
         instances, lights, seen = [], [], set()
         for inst in depsgraph.object_instances:
             ob = inst.object
@@ -88,7 +88,10 @@ class ViewportState:
                 if name not in self.objects or name in geometry:
                     self.objects[name] = self._extract(ob, lib)
                 elif shading and self.objects[name] is not None:
-                    self._reshade(ob, self.objects[name])
+                    if len(ob.material_slots) != len(self.objects[name].materials):
+                        self.objects[name] = self._extract(ob, lib)  # the slot map changed
+                    else:
+                        self._reshade(ob, self.objects[name])
             cache = self.objects.get(name)
             if cache is not None:
                 instances.append(scene_sync.Instance(cache.extract, np.array(inst.matrix_world, dtype=np.float32)))
@@ -129,11 +132,12 @@ class ViewportState:
         """Material settings changed: new uniforms; new edge batches only where the chosen edges
         changed. No native call: the classification is kept in the extract."""
         ex = cache.extract
+        cache.materials = [slot.material for slot in ob.material_slots]
         ex.slot_shading = [shading_of(m) for m in cache.materials] or [shading_of(None)]
         edges = scene_sync.rechoose_edges(ex)
         if not scene_sync.same_edges(edges, ex.edges):
             ex.edges = edges
-            cache.gpu = None
+            cache.edges_stale = True
 
     # ---- view_draw ---------------------------------------------------------------------
     def draw(self, engine, context, depsgraph):
@@ -152,7 +156,11 @@ class ViewportState:
             if cache.gpu is None:
                 cache.gpu = batches.GpuMesh(cache.extract)
                 self.counters.uploads += len(cache.gpu.surface) + len(cache.gpu.edges)
-                fresh = True
+                cache.edges_stale, fresh = False, True
+            elif cache.edges_stale:
+                cache.gpu.rebuild_edges()
+                self.counters.uploads += len(cache.gpu.edges)
+                cache.edges_stale, fresh = False, True
             gpu_meshes[id(cache.extract)] = cache.gpu
         if key != self.view_key:
             self.counters.view_changes += 1

@@ -55,8 +55,11 @@ class GpuMesh:
     def __init__(self, extract):
         self.extract = extract
         self.surface = surface_batches(extract)
-        self.edges = edge_batches(extract)
-        self.edge_count = sum(len(e) for e in extract.edges.values())
+        self.rebuild_edges()
+
+    def rebuild_edges(self):
+        self.edges = edge_batches(self.extract)
+        self.edge_count = sum(len(e) for e in self.extract.edges.values())
 
 
 def fullscreen_batch():

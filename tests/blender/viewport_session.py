@@ -134,7 +134,26 @@ def steps():
     check("edited mesh: one native build", c4["native_calls"] - c3["native_calls"] == 1)
     check("edited mesh: only its batches uploaded", 0 < c4["uploads"] - c3["uploads"] <= 2, f"{c3['uploads']} -> {c4['uploads']}")
 
-    # 5. A final render started from the UI as an artist would (a render job with its own GPU
+    # 5. A material change: new shading, no native call; a radius change re-uploads edges only.
+    mat = bpy.data.materials["Cube"]
+    bsdf = mat.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (0.1, 0.3, 0.8, 1.0)
+    yield 0.5
+    redraw()
+    yield 0.5
+    c5 = counters()
+    check("material colour: no native call, no upload", c5["native_calls"] == c4["native_calls"] and c5["uploads"] == c4["uploads"],
+          f"{c4['uploads']} -> {c5['uploads']}")
+    check("material colour: a new image", c5["passes"] > c4["passes"])
+    mat.edgelight.radius = 0.05
+    yield 0.5
+    redraw()
+    yield 0.5
+    c6 = counters()
+    check("material radius: no native call, only the edge batch re-uploaded",
+          c6["native_calls"] == c5["native_calls"] and c6["uploads"] - c5["uploads"] == 1, f"{c5['uploads']} -> {c6['uploads']}")
+
+    # 6. A final render started from the UI as an artist would (a render job with its own GPU
     # context, not -b).
     import edgelight
     edgelight.engine.last_render.clear()
