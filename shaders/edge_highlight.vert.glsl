@@ -48,13 +48,11 @@ void main()
   }
   float half_px = 0.5 * min(width_px, 4096.0) + 0.5 + 1.0 / 64.0;
 
-  /* Short edges: shaded once, at the midpoint, by corners 0 and 3 only: both triangles start at
-   * 0 and end at 3, so one of them provides the flat outputs whatever the backend's provoking
-   * vertex convention (first or last). */
+  /* Short edges: shaded once, at the midpoint, by the edge's one shading vertex (corner.w = 1),
+   * which provides both triangles' flat outputs (passes/batches.py). */
   edge_color = vec4(0.0);
   edge_arc = vec2(0.0);
-  bool provoking = (corner.x < 0.5 && corner.y < 0.0) || (corner.x > 0.5 && corner.y > 0.0);
-  if (len < EL_SHADE_PER_EDGE_BELOW_PX && provoking) {
+  if (len < EL_SHADE_PER_EDGE_BELOW_PX && corner.w > 0.5) {
     vec3 Vu = el_safe_normalize(Vm);
     ElArc g = el_arc(edge_dir, edge_n1, edge_n2, Vu);
     edge_color = vec4(el_edge_colour(g, mid, Vu, edge_dir), 1.0);

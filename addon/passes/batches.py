@@ -25,26 +25,39 @@ def surface_batches(extract):
     return out
 
 
-# Corner table of an edge quad: (end, side) for its 4 vertices, two triangles. Both triangles
-# start at corner 0 and end at corner 3, so whichever vertex provides flat varyings (first or
-# last, by backend: 3.4's OpenGL uses the last) it is 0 or 3, and only those two corners shade a
-# short edge (edge_highlight.vert.glsl).
+# Corner table of an edge quad: (end, side). Corner 0 is the edge's shading vertex: it alone
+# integrates a short edge's arc (edge_highlight.vert.glsl) and both triangles take their flat
+# varyings from it, so it starts both (first-vertex backends) or ends both (last-vertex ones).
+# All shading vertices come first in the buffer: vertex SIMD groups then either all shade or
+# none do.
 _QUAD_CORNERS = np.array([[0, -1], [0, 1], [1, -1], [1, 1]], dtype=np.float32)
-_QUAD_TRIS = np.array([0, 1, 3, 0, 2, 3], dtype=np.int32)
+_TRIS_FIRST = np.array([0, 1, 3, 0, 3, 2], dtype=np.int64)
+_TRIS_LAST = np.array([1, 3, 0, 3, 2, 0], dtype=np.int64)
 
 
 def edge_batches(extract):
+    from .provoking import first_vertex
+    tris = _TRIS_FIRST if first_vertex() else _TRIS_LAST
     out = {}
     for slot, e in extract.edges.items():
         n = len(e)
         if n == 0:
             continue
-        rep = lambda a: np.repeat(a, 4, axis=0)  # noqa: E731 - one value per quad corner
+        # Vertex of (edge i, corner c): the shading corners first, then the others edge by edge.
+        def vid(i, c):
+            return np.where(c == 0, i, n + 3 * i + (c - 1))
+        # order[k]: the (4 * edge + corner) stored at buffer position k.
+        order = np.r_[np.arange(n) * 4, (np.arange(n)[:, None] * 4 + np.arange(1, 4)).reshape(-1)]
+        edge_of = order // 4
+        rep = lambda a: a[edge_of]  # noqa: E731 - the edge's value at each stored corner
         corner = np.zeros((n * 4, 4), dtype=np.float32)
         corner[:, :2] = np.tile(_QUAD_CORNERS, (n, 1))
-        corner[:, 2] = rep(e.radius)
+        corner[:, 2] = np.repeat(e.radius, 4)
+        corner[::4, 3] = 1.0  # the shading vertex
+        corner = corner[order]
         vbo = _vertbuf({"p0": rep(e.p0), "p1": rep(e.p1), "n1": rep(e.n1), "n2": rep(e.n2), "corner": corner})
-        idx = (np.arange(n, dtype=np.int32)[:, None] * 4 + _QUAD_TRIS).reshape(-1, 3)
+        edge = np.repeat(np.arange(n), 6)
+        idx = vid(edge, np.tile(tris, n)).astype(np.int32).reshape(-1, 3)
         out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
     return out
 
