@@ -83,23 +83,6 @@ def write_pass(render_pass, pixels):
         render_pass.rect.foreach_set(pixels.reshape(-1, 4))
 
 
-def read_pass(render_pass, width, height):
-    out = np.empty(width * height * 4, dtype=np.float32)
-    try:
-        render_pass.rect.foreach_get(out)
-    except TypeError:
-        out2 = np.empty((width * height, 4), dtype=np.float32)
-        render_pass.rect.foreach_get(out2)
-        out = out2.reshape(-1)
-    return out.reshape(height, width, 4)
-
-
-def eevee_engine_id():
-    items = bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items.keys()
-    for name in ("BLENDER_EEVEE_NEXT", "BLENDER_EEVEE"):
-        if name in items:
-            return name
-    return "BLENDER_EEVEE"
 
 
 def compat_panels():
@@ -114,9 +97,6 @@ def compat_panels():
             panels.append(cls)
     return panels
 
-
-def offscreen_texture(offscreen):
-    return offscreen.texture_color  # .color_texture is gone in 5.0
 
 
 def texture(size, fmt, data=None):

@@ -125,7 +125,8 @@ class ViewportState:
             self.counters.native_calls += 1
             return ObjectCache(scene_sync.extract_mesh(ob.name, mesh, materials, lib=lib), materials)
         except scene_sync.SkipObject as e:
-            self.reports.append(str(e))
+            if str(e) not in self.reports:  # re-extracting a broken object must not grow the list
+                self.reports.append(str(e))
             return None
         finally:
             if mesh is not None:

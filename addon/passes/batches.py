@@ -75,7 +75,13 @@ class GpuMesh:
         self.edge_count = sum(len(e) for e in self.extract.edges.values())
 
 
+_fullscreen = {}
+
+
 def fullscreen_batch():
-    shader = shader_lib.get("composite")
-    from gpu_extras.batch import batch_for_shader
-    return batch_for_shader(shader, 'TRIS', {"pos": [(-1.0, -1.0), (3.0, -1.0), (-1.0, 3.0)]})
+    """One triangle covering the viewport, built once (not per frame)."""
+    if "batch" not in _fullscreen:
+        from gpu_extras.batch import batch_for_shader
+        _fullscreen["batch"] = batch_for_shader(shader_lib.get("composite"), 'TRIS',
+                                                {"pos": [(-1.0, -1.0), (3.0, -1.0), (-1.0, 3.0)]})
+    return _fullscreen["batch"]
