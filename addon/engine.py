@@ -2,8 +2,8 @@
 import bpy
 import numpy as np
 
-from . import compat, native, scene_sync, viewport
-from .passes import frame
+from . import compat, lines, native, scene_sync, viewport
+from .passes import frame, toon
 
 # The last final render's buffers, stats and reports, for tests and the benchmark script.
 last_render = {}
@@ -85,18 +85,20 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             self._report('ERROR', "EdgeLight: the scene has no camera")
             return None
         self.update_stats("EdgeLight", "Gathering scene")
-        data = scene_sync.collect(depsgraph, lib=lib)
+        toon.forget_images()  # an image may have been painted since the last render
+        settings = depsgraph.scene.edgelight
+        line_settings = lines.settings_of(settings)
+        data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings)
         if len(data.lights) > frame.MAX_LIGHTS:
             data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
         for line in data.reports:
             self._report('WARNING', f"EdgeLight: {line}")
-        settings = depsgraph.scene.edgelight
         s = frame.Settings(samples=settings.samples, highlights=settings.highlights,
-                           transparent=depsgraph.scene.render.film_transparent)
+                           transparent=depsgraph.scene.render.film_transparent, lines=line_settings)
         keep = {}
         pixels, stats = frame.render(data, camera, s, progress=self.update_progress, cancelled=self.test_break, keep=keep)
         last_render.update(keep, pixels=pixels, stats=stats, reports=list(data.reports), camera=camera, scene=data)
-        self.update_stats("EdgeLight", f"{stats.objects} objects, {stats.edges_drawn} edges")
+        self.update_stats("EdgeLight", f"{stats.objects} objects, {stats.edges_drawn} edges, {stats.lines_drawn} line segments")
         return pixels
 
 

@@ -6,6 +6,20 @@ DEFAULT_COLOR = (0.8, 0.8, 0.8)
 
 
 @dataclass(frozen=True)
+class Toon:
+    mode: int              # 0 Blinn-Phong, 1 ramp, 2 X-Toon
+    ramp: tuple = ()       # ((position, (r, g, b)), ...) sorted by position
+    smooth: bool = False   # the ramp interpolates between stops
+    image: object = None   # X-Toon bpy.types.Image, or None for the built-in map
+    orientation: bool = False  # X-Toon y axis: N.V instead of depth
+    near: float = 1.0
+    far: float = 20.0
+
+
+PHONG = Toon(0)
+
+
+@dataclass(frozen=True)
 class Shading:
     base_color: tuple      # rgb, scene-linear
     alpha: float
@@ -18,6 +32,22 @@ class Shading:
     tint: tuple
     rules: frozenset       # {'ANGLE', 'SHARP', 'BEVEL'}
     angle_deg: float
+    # toon shading
+    toon: Toon = PHONG
+
+
+def default_ramp(base):
+    """Two bands from the material's colour: a shadow at a third of it, lit from N.L = 0.5."""
+    return ((0.0, tuple(0.35 * c for c in base)), (0.5, tuple(base)))
+
+
+def toon_of(settings, base):
+    mode = {'PHONG': 0, 'RAMP': 1, 'XTOON': 2}[settings.shading]
+    if mode == 0:
+        return PHONG
+    stops = tuple(sorted((float(st.position), tuple(st.color)) for st in settings.ramp)) or default_ramp(base)
+    return Toon(mode, stops, settings.ramp_interpolation == 'LINEAR', settings.xtoon_image,
+                settings.xtoon_axis == 'ORIENTATION', float(settings.xtoon_near), float(settings.xtoon_far))
 
 
 def shininess_from_roughness(roughness):
@@ -52,7 +82,7 @@ def shading_of(material):
     """Shading for a material slot's material, or the default look when there is none."""
     if material is None:
         return Shading(DEFAULT_COLOR, 1.0, (0.04,) * 3, shininess_from_roughness(0.5),
-                       True, 1.0, 0.01, (1.0, 1.0, 1.0), frozenset({'ANGLE', 'SHARP', 'BEVEL'}), 30.0)
+                       True, 1.0, 0.01, (1.0, 1.0, 1.0), frozenset({'ANGLE', 'SHARP', 'BEVEL'}), 30.0, PHONG)
     node = _principled(material)
     if node is not None:
         c = _input(node, "Base Color")
@@ -73,4 +103,4 @@ def shading_of(material):
     s = material.edgelight
     n = s.shininess if s.use_custom_shininess else shininess_from_roughness(roughness)
     return Shading(albedo, alpha, spec, float(n), bool(s.enabled), float(s.K), float(s.radius),
-                   tuple(s.tint), frozenset(s.selection), math.degrees(s.angle))
+                   tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon_of(s, base))

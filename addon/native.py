@@ -8,7 +8,7 @@ import os
 
 import numpy as np
 
-ABI_VERSION = 1
+ABI_VERSION = 2
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -31,6 +31,10 @@ PERSPECTIVE = 0
 ORTHOGRAPHIC = 1
 VIEW_SILHOUETTES = 1 << 0
 VIEW_CONTOURS = 1 << 1
+
+CHAIN_CLOSED = 1 << 0
+CHAIN_START_FREE = 1 << 1
+CHAIN_END_FREE = 1 << 2
 
 TABLE_PAPER = 0
 TABLE_WARPED = 1
@@ -108,6 +112,10 @@ class HighlightResult(ctypes.Structure):
                 ("r_max", ctypes.c_float), ("visible_fraction", ctypes.c_float)]
 
 
+# el_chain_link and el_chain as numpy records (both 12 bytes, no padding).
+CHAIN_LINK = np.dtype([("chain", np.uint32), ("s0", np.float32), ("s1", np.float32)])
+CHAIN = np.dtype([("item_count", np.uint32), ("length", np.float32), ("flags", np.uint32)])
+
 _P = ctypes.c_void_p
 _SIGNATURES = {
     "el_mesh_create": [ctypes.POINTER(MeshDesc), ctypes.POINTER(_P)],
@@ -126,6 +134,8 @@ _SIGNATURES = {
     "el_view_get_silhouettes": [_P, _u32p, ctypes.c_uint32, _u32p],
     "el_view_get_contours": [_P, _f32p, _u32p, ctypes.c_uint32, _u32p],
     "el_view_get_stats": [_P, ctypes.POINTER(ViewStats)],
+    "el_mesh_chain_edges": [_P, _u32p, ctypes.c_uint32, _P, _P, ctypes.c_uint32, _u32p],
+    "el_view_chain_contours": [_P, _P, ctypes.c_uint32, _P, ctypes.c_uint32, _u32p],
     "el_highlight_table_create": [ctypes.POINTER(TableDesc), ctypes.POINTER(_P)],
     "el_highlight_table_get_info": [_P, ctypes.POINTER(TableInfo)],
     "el_highlight_table_copy": [_P, _f32p, ctypes.c_uint64],
@@ -275,6 +285,13 @@ class Mesh(_Handle):
     def edge_angles(self):
         return self._per_edge("el_mesh_get_edge_angles", np.float32, 1)
 
+    def face_normals(self):
+        """(T, 3) unit face normals (zero for degenerate faces)."""
+        n = self.info()["triangle_count"]
+        out = np.empty((n, 3), dtype=np.float32)
+        self._lib.call("el_mesh_get_face_normals", self._h, _ptr(out, ctypes.c_float), n)
+        return out
+
     def select_edges(self, all_of=0, any_of=0):
         count = ctypes.c_uint32()
         self._lib.call("el_mesh_select_edges", self._h, all_of, any_of, None, 0, ctypes.byref(count))
@@ -282,6 +299,17 @@ class Mesh(_Handle):
         if count.value:
             self._lib.call("el_mesh_select_edges", self._h, all_of, any_of, _ptr(out, ctypes.c_uint32), count.value, ctypes.byref(count))
         return out
+
+
+    def chain_edges(self, edges):
+        """Chains of the given edge indices: (links per edge, chains) as CHAIN_LINK / CHAIN records."""
+        edges = np.ascontiguousarray(edges, dtype=np.uint32)
+        links = np.zeros(len(edges), CHAIN_LINK)
+        chains = np.zeros(len(edges), CHAIN)
+        count = ctypes.c_uint32()
+        self._lib.call("el_mesh_chain_edges", self._h, _ptr(edges, ctypes.c_uint32), len(edges),
+                       links.ctypes.data, chains.ctypes.data, len(chains), ctypes.byref(count))
+        return links, chains[:count.value]
 
 
 def make_camera(*, object_to_world, eye=None, view_dir=None):
@@ -329,6 +357,15 @@ class View(_Handle):
         tris = np.empty(count.value, dtype=np.uint32)
         self._lib.call("el_view_get_contours", self._h, _ptr(pts, ctypes.c_float), _ptr(tris, ctypes.c_uint32), count.value, ctypes.byref(count))
         return pts, tris
+
+    def contour_chains(self):
+        """Chains of the current contour segments (in contours() order)."""
+        n = self.stats()["contour_segments"]
+        links = np.zeros(n, CHAIN_LINK)
+        chains = np.zeros(n, CHAIN)
+        count = ctypes.c_uint32()
+        self._lib.call("el_view_chain_contours", self._h, links.ctypes.data, n, chains.ctypes.data, n, ctypes.byref(count))
+        return links, chains[:count.value]
 
     def stats(self):
         s = ViewStats()

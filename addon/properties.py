@@ -12,6 +12,14 @@ def _tag(self, context):
     self.id_data.update_tag()
 
 
+class EdgeLightRampStop(bpy.types.PropertyGroup):
+    position: bpy.props.FloatProperty(
+        update=_tag, name="Position", default=0.0, min=0.0, max=1.0,
+        description="Where this colour starts along the lighting N.L (0 unlit, 1 facing the light)")
+    color: bpy.props.FloatVectorProperty(
+        update=_tag, name="Color", subtype='COLOR', size=3, default=(0.8, 0.8, 0.8), min=0.0, soft_max=1.0)
+
+
 class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
     enabled: bpy.props.BoolProperty(
         update=_tag, name="Rounded Edges", default=True,
@@ -43,7 +51,70 @@ class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
     angle: bpy.props.FloatProperty(
         update=_tag, name="Angle", default=0.5235988, min=0.0, max=3.14159265, subtype='ANGLE',
         description="Edges whose face normals differ by more than this are rounded (Auto Smooth convention)")
+    # Toon shading (seed 003's shade ramp, seed 004's X-Toon).
+    shading: bpy.props.EnumProperty(
+        update=_tag, name="Shading", default='PHONG',
+        items=[('PHONG', "Blinn-Phong", "Lit by the scene's lights from the material's colour and roughness"),
+               ('RAMP', "Toon Ramp", "Cel shading: the lighting N.L looked up in a colour ramp"),
+               ('XTOON', "X-Toon", "The lighting N.L and depth or orientation looked up in a 2-D image")])
+    ramp: bpy.props.CollectionProperty(type=EdgeLightRampStop)
+    ramp_index: bpy.props.IntProperty(name="Active Stop", default=0, min=0)
+    ramp_interpolation: bpy.props.EnumProperty(
+        update=_tag, name="Bands", default='CONSTANT',
+        items=[('CONSTANT', "Stepped", "Each stop's colour holds until the next stop: hard bands"),
+               ('LINEAR', "Smooth", "Colours blend linearly between stops")])
+    xtoon_image: bpy.props.PointerProperty(
+        update=_tag, type=bpy.types.Image, name="X-Toon Image",
+        description="x: lighting N.L (left dark, right lit); y: the detail axis below (bottom near). "
+                    "Empty: a built-in map that fades towards grey with distance")
+    xtoon_axis: bpy.props.EnumProperty(
+        update=_tag, name="Y Axis", default='DEPTH',
+        items=[('DEPTH', "Depth", "y runs from the near distance (bottom) to the far distance (top)"),
+               ('ORIENTATION', "Orientation", "y runs from facing the eye (bottom) to the outline (top)")])
+    xtoon_near: bpy.props.FloatProperty(
+        update=_tag, name="Near", default=1.0, min=0.0, unit='LENGTH', description="Distance of the image's bottom row")
+    xtoon_far: bpy.props.FloatProperty(
+        update=_tag, name="Far", default=20.0, min=0.0, unit='LENGTH', description="Distance of the image's top row")
     settings_version: bpy.props.IntProperty(default=SETTINGS_VERSION, options={'HIDDEN'})
+
+
+# Line types: (property suffix, label, default colour, default enabled, description).
+LINE_TYPES = (
+    ("silhouette", "Silhouettes", True, "Edges between a face turned to the eye and one turned away"),
+    ("crease", "Creases", True, "Edges whose faces meet at more than the crease angle"),
+    ("border", "Borders", True, "Edges of holes: edges with one face"),
+    ("contour", "Smooth Contours", False, "Where a smooth surface turns away, interpolated inside faces"),
+    ("marked", "Marked Edges", False, "Edges marked Freestyle, sharp or seam (see Marks)"),
+    ("material", "Material Boundaries", False, "Edges between faces of different materials"),
+)
+
+
+def _line_style(name, enabled):
+    """A line type's style. One class per type, because a PointerProperty's group cannot carry
+    per-pointer defaults and silhouettes, creases and borders start enabled."""
+    annotations = {
+        "enabled": bpy.props.BoolProperty(update=_tag, name="Enabled", default=enabled),
+        "color": bpy.props.FloatVectorProperty(
+            update=_tag, name="Color", subtype='COLOR', size=3, default=(0.0, 0.0, 0.0), min=0.0, soft_max=1.0),
+        "opacity": bpy.props.FloatProperty(update=_tag, name="Opacity", default=1.0, min=0.0, max=1.0, subtype='FACTOR'),
+        "width": bpy.props.FloatProperty(
+            update=_tag, name="Width", default=2.0, min=0.0, soft_max=20.0,
+            description="Line width in pixels, or in scene units (see Unit)"),
+        "unit": bpy.props.EnumProperty(
+            update=_tag, name="Unit", default='PIXELS',
+            items=[('PIXELS', "Pixels", "The same width at any distance"),
+                   ('SCENE', "Scene Units", "A width in the scene that thins with distance, down to the pixel floor")]),
+        "min_pixels": bpy.props.FloatProperty(
+            update=_tag, name="Pixel Floor", default=1.0, min=0.0, soft_max=4.0,
+            description="Scene-unit lines never get thinner than this many pixels"),
+        "taper": bpy.props.FloatProperty(
+            update=_tag, name="Taper", default=0.0, min=0.0, max=0.5, subtype='FACTOR',
+            description="Open chains thin to a point over this fraction of their length at their free ends"),
+    }
+    return type(f"EdgeLightLineStyle_{name}", (bpy.types.PropertyGroup,), {"__annotations__": annotations})
+
+
+LINE_STYLES = tuple(_line_style(name, on) for name, _label, on, _doc in LINE_TYPES)
 
 
 class EdgeLightSceneSettings(bpy.types.PropertyGroup):
@@ -55,10 +126,39 @@ class EdgeLightSceneSettings(bpy.types.PropertyGroup):
         description="Jittered samples accumulated in the viewport")
     highlights: bpy.props.BoolProperty(
         update=_tag, name="Edge Highlights", default=True, description="Draw the rounded-edge highlight pass")
+    # Ink lines.
+    use_lines: bpy.props.BoolProperty(update=_tag, name="Lines", default=False, description="Draw ink lines on feature edges")
+    crease_angle: bpy.props.FloatProperty(
+        update=_tag, name="Crease Angle", default=0.7853982, min=0.0, max=3.14159265, subtype='ANGLE',
+        description="Edges whose face normals differ by more than this are creases (Auto Smooth convention; "
+                    "Freestyle's crease angle is 180 degrees minus this)")
+    marks: bpy.props.EnumProperty(
+        update=_tag, name="Marks", options={'ENUM_FLAG'}, default={'FREESTYLE'},
+        items=[('FREESTYLE', "Freestyle", "Edges marked for Freestyle"),
+               ('SHARP', "Sharp", "Edges marked sharp"),
+               ('SEAM', "Seam", "UV seams")],
+        description="Which edge marks the Marked Edges lines draw")
+    hidden_lines: bpy.props.EnumProperty(
+        update=_tag, name="Hidden Lines", default='OFF',
+        items=[('OFF', "Off", "Lines behind surfaces are not drawn"),
+               ('DIMMED', "Dimmed", "Lines behind surfaces are drawn at the hidden opacity")])
+    hidden_opacity: bpy.props.FloatProperty(update=_tag, name="Hidden Opacity", default=0.25, min=0.0, max=1.0, subtype='FACTOR')
+    debug: bpy.props.EnumProperty(
+        update=_tag, name="Debug", options={'ENUM_FLAG'}, default=set(),
+        items=[('EDGE_TYPES', "Edge Types", "Every line type in its own colour: silhouettes red, creases and borders "
+                                            "yellow, contours cyan, marks magenta, material boundaries green"),
+               ('WHITEOUT', "Whiteout", "Unlit white surfaces and no highlights: lines only"),
+               ('WIRE', "Wire", "The mesh's edges as thin blue lines")],
+        description="Views for checking what EdgeLight finds")
     settings_version: bpy.props.IntProperty(default=SETTINGS_VERSION, options={'HIDDEN'})
 
 
-CLASSES = (EdgeLightMaterialSettings, EdgeLightSceneSettings)
+for (_name, _label, _on, _doc), _style in zip(LINE_TYPES, LINE_STYLES):
+    EdgeLightSceneSettings.__annotations__["line_" + _name] = bpy.props.PointerProperty(
+        type=_style, name=_label, description=_doc)
+
+
+CLASSES = (EdgeLightRampStop, EdgeLightMaterialSettings, *LINE_STYLES, EdgeLightSceneSettings)
 
 
 def register():

@@ -9,6 +9,7 @@ import math
 import numpy as np
 
 from . import compat, native
+from .lines import static_lines
 from .materials import shading_of
 
 GEOMETRY_TYPES = {'MESH', 'CURVE', 'SURFACE', 'FONT', 'META'}
@@ -37,6 +38,25 @@ class MeshExtract:
     edges: dict = field(default_factory=dict)  # slot -> EdgeSet
     info: dict = field(default_factory=dict)
     edge_data: object = None                    # EdgeData
+    native: object = None                       # native.Mesh, kept for chains and views
+    lines: dict = field(default_factory=dict)   # line type -> lines.LineSegments (static types)
+    lines_key: object = None                    # the LineSettings.static_key() of `lines`
+    views: dict = field(default_factory=dict)   # instance index -> native.View
+    _face_normals: object = None
+
+    def face_normals(self):
+        if self._face_normals is None:
+            self._face_normals = self.native.face_normals()
+        return self._face_normals
+
+    def update_lines(self, settings):
+        """Re-chooses the static line sets if the settings they depend on changed; True if so."""
+        key = settings.static_key() if settings else None
+        if key == self.lines_key:
+            return False
+        self.lines = static_lines(self.edge_data, self.native, settings)
+        self.lines_key = key
+        return True
 
 
 @dataclass
@@ -109,7 +129,7 @@ def _first_two_faces(tri_edges, edge_count):
     return first, second
 
 
-def extract_mesh(name, mesh, materials, lib=None):
+def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     """Arrays and chosen edges of an evaluated mesh. Raises SkipObject with a reason."""
     mesh.calc_loop_triangles()
     tri_count = len(mesh.loop_triangles)
@@ -142,6 +162,8 @@ def extract_mesh(name, mesh, materials, lib=None):
     out.edge_data = EdgeData(m.edge_flags(), m.edge_angles(), m.edge_normals(), edges, positions,
                              *_first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel)
     out.edges = choose_edges(out.edge_data, shading)
+    out.native = m
+    out.update_lines(line_settings)
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
     return out
@@ -233,7 +255,7 @@ def world_ambient(scene):
     return tuple(float(v) for v in world.color)
 
 
-def collect(depsgraph, lib=None):
+def collect(depsgraph, lib=None, line_settings=None):
     """Everything visible in the evaluated scene. Objects that fail are reported and skipped."""
     instances, lights, reports, extracted = [], [], [], {}
     for inst in depsgraph.object_instances:
@@ -254,7 +276,7 @@ def collect(depsgraph, lib=None):
                 if mesh is None:
                     raise SkipObject(f"{ob.name}: no geometry")
                 materials = [slot.material for slot in ob.material_slots]
-                extracted[key] = extract_mesh(ob.name, mesh, materials, lib=lib)
+                extracted[key] = extract_mesh(ob.name, mesh, materials, lib=lib, line_settings=line_settings)
                 note = extracted[key].info.get("note")
                 if note:
                     reports.append(note)

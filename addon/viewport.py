@@ -12,9 +12,9 @@ import time
 import bpy
 import numpy as np
 
-from . import native, scene_sync
+from . import lines, native, scene_sync
 from .materials import shading_of
-from .passes import batches, frame
+from .passes import batches, frame, line_pass, toon
 
 # Below one 8-bit step an edge cannot change a pixel.
 MIN_WEIGHT = 1.0 / 255.0
@@ -33,6 +33,9 @@ class Counters:
     objects: int = 0
     edges_drawn: int = 0
     edges_culled: int = 0
+    view_calls: int = 0       # native view updates (silhouettes, contours) for a new view
+    view_uploads: int = 0     # view-dependent line batches built
+    lines_drawn: int = 0      # line segments drawn in the last pass
 
     def as_dict(self):
         return dict(self.__dict__)
@@ -48,6 +51,7 @@ class ObjectCache:
     materials: list                    # the material per slot at extraction
     gpu: object = None                 # batches.GpuMesh, built in view_draw
     edges_stale: bool = False          # the chosen edges changed: rebuild the edge batches only
+    lines_stale: bool = False          # the static line sets changed: rebuild their batches only
 
 
 class ViewportState:
@@ -64,6 +68,9 @@ class ViewportState:
         self.counted_at = -1e9
         self.count_cost = 0.0
         self.counters = Counters()
+        self.line_settings = None
+        self.view_batches = []
+        self.view_lines_key = None
 
     # ---- view_update -------------------------------------------------------------------
     def sync(self, depsgraph, lib):
@@ -75,6 +82,10 @@ class ViewportState:
                 geometry.add(idb.name)
             elif isinstance(idb, bpy.types.Material) or (isinstance(idb, bpy.types.Object) and update.is_updated_shading):
                 shading = True  # a material's settings, or which material a slot holds
+            elif isinstance(idb, bpy.types.Image):
+                toon.forget_images()  # an X-Toon image was edited
+                shading = True
+        self.line_settings = lines.settings_of(depsgraph.scene.edgelight)
         instances, lights, seen = [], [], set()
         for inst in depsgraph.object_instances:
             ob = inst.object
@@ -96,6 +107,8 @@ class ViewportState:
                     else:
                         self._reshade(ob, self.objects[name])
             cache = self.objects.get(name)
+            if cache is not None and cache.extract.update_lines(self.line_settings):
+                cache.lines_stale = True  # crease angle, marks or tapering changed
             if cache is not None:
                 instances.append(scene_sync.Instance(cache.extract, np.array(inst.matrix_world, dtype=np.float32)))
         removed = [n for n in self.objects if n not in seen]
@@ -123,7 +136,8 @@ class ViewportState:
                 return None
             materials = [slot.material for slot in ob.material_slots]
             self.counters.native_calls += 1
-            return ObjectCache(scene_sync.extract_mesh(ob.name, mesh, materials, lib=lib), materials)
+            return ObjectCache(scene_sync.extract_mesh(ob.name, mesh, materials, lib=lib,
+                                                       line_settings=self.line_settings), materials)
         except scene_sync.SkipObject as e:
             if str(e) not in self.reports:  # re-extracting a broken object must not grow the list
                 self.reports.append(str(e))
@@ -159,12 +173,17 @@ class ViewportState:
         for cache in self._caches():
             if cache.gpu is None:
                 cache.gpu = batches.GpuMesh(cache.extract)
-                self.counters.uploads += len(cache.gpu.surface) + len(cache.gpu.edges)
-                cache.edges_stale, fresh = False, True
-            elif cache.edges_stale:
+                self.counters.uploads += len(cache.gpu.surface) + len(cache.gpu.edges) + len(cache.gpu.lines)
+                cache.edges_stale = cache.lines_stale = False
+                fresh = True
+            if cache.edges_stale:
                 cache.gpu.rebuild_edges()
                 self.counters.uploads += len(cache.gpu.edges)
                 cache.edges_stale, fresh = False, True
+            if cache.lines_stale:
+                cache.gpu.rebuild_lines()
+                self.counters.uploads += len(cache.gpu.lines)
+                cache.lines_stale, fresh = False, True
             gpu_meshes[id(cache.extract)] = cache.gpu
         if key != self.view_key:
             self.counters.view_changes += 1
@@ -176,13 +195,32 @@ class ViewportState:
         else:
             scene = scene_sync.SceneData(self.instances, self.lights, self.ambient, self.reports)
             s = frame.Settings(samples=settings.viewport_samples, highlights=settings.highlights,
-                               transparent=depsgraph.scene.render.film_transparent)
-            frame.draw(scene, camera, s, self.targets, gpu_meshes)
+                               transparent=depsgraph.scene.render.film_transparent, lines=self.line_settings)
+            self._update_view_lines(scene, camera, key)
+            stats = frame.draw(scene, camera, s, self.targets, gpu_meshes, view_batches=self.view_batches)
+            self.counters.lines_drawn = stats.lines_drawn
             self.counters.passes += 1
             self.image_valid = True
         self.counters.objects = len(self.instances)
         blit(engine, depsgraph.scene, self.targets.result)
         engine.update_stats("EdgeLight", self.summary() + (f" | {self.reports[-1]}" if self.reports else ""))
+
+    def _update_view_lines(self, scene, camera, view_key):
+        """Silhouettes and contours for this view: native view calls and new batches only when
+        the view, an instance or the view-dependent line settings changed."""
+        ls = self.line_settings
+        view_styles = tuple((t, st.taper > 0.0) for t, st in ls.styles if t in lines.VIEW_TYPES) if ls else ()
+        key = (view_key, view_styles,
+               tuple((id(i.mesh), i.matrix.tobytes()) for i in self.instances)) if view_styles else None
+        if key == self.view_lines_key:
+            return
+        self.view_lines_key = key
+        if key is None:
+            self.view_batches = []
+            return
+        segments = frame.view_line_segments(scene, camera, ls, self.counters)
+        self.view_batches = [line_pass.line_batches(segs) for segs in segments]
+        self.counters.view_uploads += sum(len(b) for b in self.view_batches)
 
     def _caches(self):
         """The caches of the drawn meshes, each once (instances share one)."""
@@ -220,13 +258,14 @@ class ViewportState:
     def summary(self):
         c = self.counters
         return (f"{c.objects} objects | edges {c.edges_drawn} drawn, {c.edges_culled} culled | "
+                f"lines {c.lines_drawn} | "
                 f"cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}")
 
 
 def scene_signature(state, scene):
     """Everything besides geometry and materials that the image depends on."""
     s = scene.edgelight
-    return (tuple((id(i.mesh), i.matrix.tobytes()) for i in state.instances),
+    return (tuple((id(i.mesh), i.matrix.tobytes()) for i in state.instances), state.line_settings,
             tuple((l.kind, l.color, l.position, l.direction, l.spot_cos, l.spot_blend) for l in state.lights),
             state.ambient, s.viewport_samples, s.highlights, scene.render.film_transparent)
 

@@ -1,12 +1,16 @@
-/* I = W Is + (1 - W) I_origin, with the highlight buffer premultiplied (W Is, W); then the world
- * colour behind whatever is not opaque (background.w = 0 for a transparent film). Samples add up
- * in the result with additive blending, each scaled by weight = 1 / samples. */
+/* I = W Is + (1 - W) I_origin, with the highlight buffer premultiplied (W Is, W); ink lines
+ * (straight alpha) over that; then the world colour behind whatever is not opaque
+ * (background.w = 0 for a transparent film). Samples add up in the result with additive
+ * blending, each scaled by weight = 1 / samples. */
 void main()
 {
   ivec2 p = ivec2(gl_FragCoord.xy);
   vec4 surf = texelFetch(surface_color, p, 0);
   vec4 hl = texelFetch(highlight_color, p, 0);
+  vec4 ln = texelFetch(line_color, p, 0);
   vec3 rgb = hl.rgb + (1.0 - hl.a) * surf.rgb;
   float a = hl.a + (1.0 - hl.a) * surf.a;
+  rgb = ln.a * ln.rgb + (1.0 - ln.a) * rgb;
+  a = ln.a + (1.0 - ln.a) * a;
   out_color = vec4(rgb + (1.0 - a) * background.w * background.rgb, mix(a, 1.0, background.w)) * weight;
 }

@@ -1,11 +1,23 @@
-/* Surface pass: Blinn-Phong from the material, ambient from the world; writes colour and the
- * inverse view-space depth the edge passes test against. */
+/* Surface pass: Blinn-Phong from the material, ambient from the world, or toon shading
+ * (toon.glsl), or unlit white (whiteout, toon.x = 3); writes colour and the inverse view-space
+ * depth the edge and line passes test against. */
 void main()
 {
+  out_depth = 1.0 / max(view_depth, 1e-30); /* 0 where nothing was drawn: infinitely far */
+  int mode = int(toon.x + 0.5);
+  if (mode == 3) {
+    out_color = vec4(1.0);
+    return;
+  }
   vec3 N = normalize(world_nor);
   vec3 V = frame.eye.w > 0.5 ? normalize(frame.eye.xyz - world_pos) : -frame.view_dir.xyz;
   if (!gl_FrontFacing) {
     N = -N; /* back faces are shaded as seen (Blender shows both sides) */
+  }
+  if (mode == 1 || mode == 2) {
+    float x = el_toon_light(N, world_pos);
+    out_color = vec4(mode == 1 ? el_toon_ramp(x) : el_xtoon(x, view_depth, N, V), base_color.a);
+    return;
   }
   vec3 albedo = base_color.rgb;
   vec3 spec = spec_color.rgb;
@@ -23,5 +35,4 @@ void main()
     col += E * (albedo * (nl / 3.14159265) + spec * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
   }
   out_color = vec4(col, base_color.a);
-  out_depth = 1.0 / max(view_depth, 1e-30); /* 0 where nothing was drawn: infinitely far */
 }

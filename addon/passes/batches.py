@@ -69,6 +69,12 @@ class GpuMesh:
         self.extract = extract
         self.surface = surface_batches(extract)
         self.rebuild_edges()
+        self.rebuild_lines()
+
+    def rebuild_lines(self):
+        """The static line types (view-independent), type -> (batch, count)."""
+        from .line_pass import line_batches
+        self.lines = line_batches(self.extract.lines)
 
     def rebuild_edges(self):
         self.edges = edge_batches(self.extract)

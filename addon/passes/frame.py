@@ -9,7 +9,8 @@ import gpu
 import numpy as np
 
 from .. import compat
-from . import batches, shader_lib, table
+from . import batches, line_pass, shader_lib, table, toon
+from .. import lines as ink
 
 MAX_LIGHTS = 16
 
@@ -90,9 +91,12 @@ class Targets:
         self.depth = compat.texture((width, height), 'DEPTH_COMPONENT32F')
         self.highlight = compat.texture((width, height), 'RGBA32F')
         self.result = compat.texture((width, height), 'RGBA32F')
+        self.lines = compat.texture((width, height), 'RGBA32F')
+        self.line_depth = compat.texture((width, height), 'DEPTH_COMPONENT32F')
         self.surface_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.surface_color, self.surface_depth))
         self.highlight_fb = gpu.types.GPUFrameBuffer(color_slots=(self.highlight,))
         self.result_fb = gpu.types.GPUFrameBuffer(color_slots=(self.result,))
+        self.line_fb = gpu.types.GPUFrameBuffer(depth_slot=self.line_depth, color_slots=(self.lines,))
 
 
 @dataclass
@@ -100,6 +104,7 @@ class Settings:
     samples: int = 8
     highlights: bool = True
     transparent: bool = False
+    lines: object = None          # lines.LineSettings, or None: no lines
 
 
 @dataclass
@@ -108,6 +113,7 @@ class Stats:
     edges_drawn: int = 0
     samples: int = 0
     samples_requested: int = 0
+    lines_drawn: int = 0
 
 
 def _shading_uniforms(shader, s):
@@ -115,7 +121,15 @@ def _shading_uniforms(shader, s):
     shader.uniform_float("spec_color", (*s.spec_color, s.shininess))
 
 
-def draw_surface(targets, scene, gpu_meshes, ubo):
+def _toon_uniforms(shader, s, whiteout):
+    t = s.toon
+    mode = 3.0 if whiteout else float(t.mode)
+    shader.uniform_float("toon", (mode, t.near, t.far, (1.0 if t.smooth else 0.0) + (2.0 if t.orientation else 0.0)))
+    shader.uniform_sampler("toon_ramp", toon.ramp_texture(t) if mode == 1.0 else toon.dummy())
+    shader.uniform_sampler("toon_map", toon.map_texture(t, s.base_color) if mode == 2.0 else toon.dummy())
+
+
+def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False):
     shader = shader_lib.get("surface")
     with targets.surface_fb.bind():
         targets.surface_fb.clear(color=(0.0, 0.0, 0.0, 0.0), depth=1.0)
@@ -130,6 +144,7 @@ def draw_surface(targets, scene, gpu_meshes, ubo):
             shader.uniform_float("model", _mat(inst.matrix))
             for slot, batch in gm.surface.items():
                 _shading_uniforms(shader, gm.extract.slot_shading[slot])
+                _toon_uniforms(shader, gm.extract.slot_shading[slot], whiteout)
                 batch.draw(shader)
         gpu.state.depth_test_set('NONE')
         gpu.state.depth_mask_set(False)
@@ -168,6 +183,7 @@ def draw_composite(targets, background, full_screen, weight):
         shader.bind()
         shader.uniform_sampler("surface_color", targets.surface_color)
         shader.uniform_sampler("highlight_color", targets.highlight)
+        shader.uniform_sampler("line_color", targets.lines)
         shader.uniform_float("background", background)
         shader.uniform_float("weight", weight)
         full_screen.draw(shader)
@@ -182,9 +198,31 @@ def read(texture, width, height):
     return np.asarray(buf, dtype=np.float32).reshape(height, width, 4)
 
 
-def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=None):
+def line_instances(scene, gpu_meshes, view_batches):
+    """[(matrix, {type: (batch, count)})]: each instance's static line batches (shared by the
+    instances of a mesh) and its own view-dependent ones (view_batches[i] for instance i)."""
+    out = []
+    for i, inst in enumerate(scene.instances):
+        batches_of = dict(gpu_meshes[id(inst.mesh)].lines)
+        if view_batches and i < len(view_batches) and view_batches[i]:
+            batches_of.update(view_batches[i])
+        out.append((inst.matrix, batches_of))
+    return out
+
+
+def view_line_segments(scene, camera, line_settings, counters=None):
+    """Per instance, type -> LineSegments of the view-dependent types (native view calls)."""
+    out, seen = [], {}
+    for inst in scene.instances:
+        index = seen[id(inst.mesh)] = seen.get(id(inst.mesh), -1) + 1
+        out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters))
+    return out
+
+
+def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=None, view_batches=None):
     """Draws `scene` from `camera` into targets.result (GPU only, nothing read back).
 
+    view_batches: per instance, the view-dependent line batches for this camera.
     progress(fraction) and cancelled() are called between samples."""
     full_screen = batches.fullscreen_batch()
     background = (*scene.ambient, 0.0 if settings.transparent else 1.0)
@@ -198,16 +236,19 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         projection = jittered_projection(np.asarray(camera.projection, np.float64), camera.width, camera.height, *jitter(s))
         data = frame_data(camera, projection, scene)
         ubo = gpu.types.GPUUniformBuf(gpu.types.Buffer('FLOAT', data.size, data))
-        draw_surface(targets, scene, gpu_meshes, ubo)
-        # The edge pass runs once, on the unjittered first sample: its coverage of the band is
-        # already box-filtered across the edge analytically, so later samples reuse it and only
-        # the surface is re-jittered (docs/addon.md).
+        whiteout = settings.lines is not None and settings.lines.whiteout
+        draw_surface(targets, scene, gpu_meshes, ubo, whiteout)
+        # The edge and line passes run once, on the unjittered first sample: their coverage is
+        # box-filtered across the edge or stroke analytically, so later samples reuse them and
+        # only the surface is re-jittered (docs/addon.md).
         if s == 0:
-            if settings.highlights:
+            if settings.highlights and not whiteout:
                 draw_highlights(targets, scene, gpu_meshes, ubo, stats)
             else:
                 with targets.highlight_fb.bind():
                     targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
+            line_pass.draw_lines(targets, line_instances(scene, gpu_meshes, view_batches) if settings.lines else [],
+                                 settings.lines, ubo, stats)
         draw_composite(targets, background, full_screen, 1.0 / samples)
         stats.samples += 1
         if progress:
@@ -226,7 +267,8 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None):
     for inst in scene.instances:
         if id(inst.mesh) not in gpu_meshes:
             gpu_meshes[id(inst.mesh)] = batches.GpuMesh(inst.mesh)
-    stats = draw(scene, camera, settings, targets, gpu_meshes, progress, cancelled)
+    view_batches = [line_pass.line_batches(segs) for segs in view_line_segments(scene, camera, settings.lines)]
+    stats = draw(scene, camera, settings, targets, gpu_meshes, progress, cancelled, view_batches)
     pixels = read(targets.result, w, h)
     if 0 < stats.samples < stats.samples_requested:  # cancelled: rescale what was accumulated
         pixels *= stats.samples_requested / stats.samples
@@ -234,4 +276,5 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None):
         keep["surface"] = read(targets.surface_color, w, h)
         keep["highlight"] = read(targets.highlight, w, h)
         keep["depth"] = read(targets.surface_depth, w, h)
+        keep["lines"] = read(targets.lines, w, h)
     return pixels, stats

@@ -139,10 +139,11 @@ void BM_Contours(benchmark::State& state) {
     auto data = el::build_mesh(desc_of(m));
     std::vector<float> pts;
     std::vector<uint32_t> tris;
+    std::vector<uint64_t> keys;
     const auto views = orbit(*data);
     size_t k = 0;
     for (auto _ : state) {
-        el::compute_contours(*data, views[k++ % views.size()], pts, tris);
+        el::compute_contours(*data, views[k++ % views.size()], pts, tris, keys);
         benchmark::DoNotOptimize(pts.data());
     }
     per_item(state, "ns_per_triangle", m.triangle_count());

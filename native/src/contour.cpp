@@ -5,9 +5,10 @@
 namespace el {
 
 void compute_contours(const MeshData& mesh, const ViewPoint& view, std::vector<float>& points,
-                      std::vector<uint32_t>& triangles) {
+                      std::vector<uint32_t>& triangles, std::vector<uint64_t>& keys) {
     points.clear();
     triangles.clear();
+    keys.clear();
     const uint32_t vn = mesh.vertex_count();
     std::vector<float> g(vn);
     for (uint32_t v = 0; v < vn; ++v) g[v] = view.facing(mesh.geom.vertex_normals[v], mesh.positions[v]);
@@ -19,6 +20,7 @@ void compute_contours(const MeshData& mesh, const ViewPoint& view, std::vector<f
         const bool s0 = g[c[0]] >= 0.0f, s1 = g[c[1]] >= 0.0f, s2 = g[c[2]] >= 0.0f;
         if (s0 == s1 && s1 == s2) continue;
         float seg[6];
+        uint64_t key[2] = {0, 0};
         int k = 0;
         for (int side = 0; side < 3; ++side) {
             // Lower vertex first, so both triangles of a side compute the same point bit for bit
@@ -31,11 +33,13 @@ void compute_contours(const MeshData& mesh, const ViewPoint& view, std::vector<f
             seg[3 * k] = p.x;
             seg[3 * k + 1] = p.y;
             seg[3 * k + 2] = p.z;
+            key[k] = (uint64_t(a) << 32) | b;  // the side the point lies on: shared by both its triangles
             ++k;
         }
         // Exactly two sides change sign when the three signs are not all equal.
         points.insert(points.end(), seg, seg + 6);
         triangles.push_back(t);
+        keys.insert(keys.end(), key, key + 2);
     }
 }
 

@@ -9,8 +9,9 @@
 
 namespace el {
 
-// Appends 6 floats per segment (two object-space points) and the triangle of each segment.
+// Writes 6 floats per segment (two object-space points), the triangle of each segment, and per
+// endpoint a key naming the triangle side it lies on (lower vertex << 32 | higher), for chaining.
 void compute_contours(const MeshData& mesh, const ViewPoint& view, std::vector<float>& points,
-                      std::vector<uint32_t>& triangles);
+                      std::vector<uint32_t>& triangles, std::vector<uint64_t>& keys);
 
 }  // namespace el

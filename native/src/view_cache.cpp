@@ -74,13 +74,14 @@ bool ViewCache::update(const ViewPoint& vp, uint32_t new_what) {
     if (new_what & EL_VIEW_CONTOURS) {
         const bool had = valid && (what & EL_VIEW_CONTOURS);
         if (!had || !(vp == view)) {
-            compute_contours(*mesh, vp, contour_points, contour_triangles);
+            compute_contours(*mesh, vp, contour_points, contour_triangles, contour_keys);
             ++stats.contour_passes;
             changed = true;
         }
     } else if (!contour_triangles.empty()) {
         contour_points.clear();
         contour_triangles.clear();
+        contour_keys.clear();
         changed = true;
     }
     view = vp;

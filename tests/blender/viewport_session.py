@@ -153,7 +153,44 @@ def steps():
     check("material radius: no native call, only the edge batch re-uploaded",
           c6["native_calls"] == c5["native_calls"] and c6["uploads"] - c5["uploads"] == 1, f"{c5['uploads']} -> {c6['uploads']}")
 
-    # 6. A final render started from the UI as an artist would (a render job with its own GPU
+    # 6. Ink lines: silhouettes are view-dependent (native view calls on a new view only),
+    # creases static (rebuilt when their angle changes, with no mesh build).
+    before, _ = screenshot("before_lines")
+    scene = bpy.context.scene
+    scene.edgelight.use_lines = True
+    scene.edgelight.line_silhouette.width = 3.0
+    yield 0.5
+    redraw()
+    yield 0.5
+    after, path = screenshot("lines")
+    c7 = counters()
+    dark = lambda img: int((img[..., :3].max(axis=2) < 0.02).sum())  # noqa: E731
+    check("lines: drawn in the viewport, black ink on screen", c7["lines_drawn"] > 0 and dark(after) > dark(before) + 200,
+          f"{path}: {c7['lines_drawn']} segments, dark pixels {dark(before)} -> {dark(after)}")
+    check("lines: silhouettes from a native view call, no mesh build",
+          c7["view_calls"] > c6["view_calls"] and c7["native_calls"] == c6["native_calls"], json.dumps(c7))
+    redraw()
+    yield 0.5
+    c8 = counters()
+    check("lines: static redraw makes no view call and no upload",
+          c8["view_calls"] == c7["view_calls"] and c8["view_uploads"] == c7["view_uploads"] and c8["uploads"] == c7["uploads"]
+          and c8["cache_hits"] > c7["cache_hits"])
+    region.data.view_rotation.rotate(__import__("mathutils").Euler((0.0, 0.0, 0.3)))
+    redraw()
+    yield 0.5
+    c9 = counters()
+    check("lines: moved view re-runs view calls only",
+          c9["view_calls"] > c8["view_calls"] and c9["native_calls"] == c8["native_calls"] and c9["uploads"] == c8["uploads"],
+          f"view calls {c8['view_calls']} -> {c9['view_calls']}")
+    scene.edgelight.crease_angle = 1.2
+    yield 0.5
+    redraw()
+    yield 0.5
+    c10 = counters()
+    check("lines: crease angle change re-chooses static lines without a mesh build",
+          c10["native_calls"] == c9["native_calls"] and c10["uploads"] > c9["uploads"], f"uploads {c9['uploads']} -> {c10['uploads']}")
+
+    # 7. A final render started from the UI as an artist would (a render job with its own GPU
     # context, not -b).
     import edgelight
     edgelight.engine.last_render.clear()

@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 1u
+#define EL_ABI_VERSION 2u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -156,6 +156,36 @@ EL_API el_status el_mesh_select_edges(const el_mesh* mesh, uint32_t all_of, uint
                                       uint32_t* out, uint32_t capacity, uint32_t* out_count);
 
 /* ------------------------------------------------------------------------------------------ */
+/* Chains: lines linked end to end, for tapering and styling along their length                 */
+/* ------------------------------------------------------------------------------------------ */
+
+/* Items (edges, contour segments) are linked where exactly two of them meet. An end where one
+ * item ends is free (a line may taper there); where three or more meet, chains stop at a
+ * junction without tapering. */
+#define EL_CHAIN_CLOSED     (1u << 0) /* a loop: no ends */
+#define EL_CHAIN_START_FREE (1u << 1) /* the chain's start is a free end */
+#define EL_CHAIN_END_FREE   (1u << 2) /* the chain's end is a free end */
+
+typedef struct el_chain_link {
+    uint32_t chain;  /* index into the chains array */
+    float s0;        /* arc length from the chain's start to the item's first endpoint */
+    float s1;        /* ... and to its second endpoint (object-space units) */
+} el_chain_link;
+
+typedef struct el_chain {
+    uint32_t item_count;
+    float length;    /* object-space arc length */
+    uint32_t flags;  /* EL_CHAIN_* */
+} el_chain;
+
+/* Chains the given edges (distinct edge indices) by their shared vertices. out_links gets one
+ * record per input edge (edge_count of them), out_chains up to capacity_chains records; at most
+ * edge_count chains exist. */
+EL_API el_status el_mesh_chain_edges(const el_mesh* mesh, const uint32_t* edges, uint32_t edge_count,
+                                     el_chain_link* out_links, el_chain* out_chains,
+                                     uint32_t capacity_chains, uint32_t* out_chain_count);
+
+/* ------------------------------------------------------------------------------------------ */
 /* View: silhouettes and smooth contours, cached per view                                       */
 /* ------------------------------------------------------------------------------------------ */
 
@@ -205,6 +235,11 @@ EL_API el_status el_view_get_facing(const el_view* view, uint8_t* out, uint32_t 
 EL_API el_status el_view_get_contours(const el_view* view, float* out_points,
                                       uint32_t* out_triangles, uint32_t capacity_segments,
                                       uint32_t* out_count);
+/* Chains the current contour segments through the triangle sides they share (one link per
+ * segment, in el_view_get_contours order). */
+EL_API el_status el_view_chain_contours(const el_view* view, el_chain_link* out_links,
+                                        uint32_t capacity_links, el_chain* out_chains,
+                                        uint32_t capacity_chains, uint32_t* out_chain_count);
 EL_API el_status el_view_get_stats(const el_view* view, el_view_stats* out_stats);
 
 /* ------------------------------------------------------------------------------------------ */

@@ -1,0 +1,177 @@
+"""Ink lines, CPU side: which edges each line type draws, their chains (for tapering at free
+ends), and the view-dependent types (silhouettes, smooth contours) per instance and view.
+
+Produces plain arrays (LineSegments); passes/line_pass.py turns them into quads and draws them.
+"""
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import native
+
+# Draw order; where two types share an edge the first drawn wins a tie (line_pass.py).
+TYPES = ("silhouette", "border", "crease", "contour", "material", "marked")
+VIEW_TYPES = frozenset({"silhouette", "contour"})
+# Debug colours (seed 003: silhouettes red, borders and creases yellow).
+DEBUG_COLORS = {
+    "silhouette": (1.0, 0.0, 0.0), "crease": (1.0, 1.0, 0.0), "border": (1.0, 1.0, 0.0),
+    "contour": (0.0, 1.0, 1.0), "marked": (1.0, 0.0, 1.0), "material": (0.0, 1.0, 0.0),
+    "wire": (0.1, 0.3, 1.0),
+}
+_MARK_BITS = {"FREESTYLE": native.MARK_FREESTYLE, "SHARP": native.MARK_SHARP, "SEAM": native.MARK_SEAM}
+NO_TAPER = 1.0e9  # taper parameter of an end with no free end on its chain
+
+
+@dataclass(frozen=True)
+class Style:
+    color: tuple
+    opacity: float
+    width: float
+    scene_units: bool
+    min_pixels: float
+    taper: float
+
+
+@dataclass(frozen=True)
+class LineSettings:
+    styles: tuple              # ((type, Style), ...) of the drawn types, in draw order
+    crease_deg: float
+    marks: int                 # EL_MARK_* bits the marked type draws
+    hidden_opacity: float      # 0: hidden lines are not drawn
+    whiteout: bool = False
+
+    @property
+    def types(self):
+        return tuple(t for t, _ in self.styles)
+
+    def style(self, kind):
+        return dict(self.styles).get(kind)
+
+    def static_key(self):
+        """What the static (view-independent) line sets depend on."""
+        return (self.crease_deg, self.marks,
+                tuple((t, s.taper > 0.0) for t, s in self.styles if t not in VIEW_TYPES))
+
+
+def settings_of(scene_settings):
+    """The scene's line settings, or None when no line is drawn."""
+    s = scene_settings
+    debug = set(s.debug)
+    styles = []
+    if s.use_lines or 'EDGE_TYPES' in debug:
+        for kind in TYPES:
+            p = getattr(s, "line_" + kind)
+            if 'EDGE_TYPES' in debug:
+                # Every type, in its own colour, opaque and at least 1.5 px wide.
+                styles.append((kind, Style(DEBUG_COLORS[kind], 1.0, max(float(p.width), 1.5) if p.unit == 'PIXELS' else 1.5,
+                                           False, 0.0, float(p.taper))))
+            elif p.enabled and p.opacity > 0.0 and p.width > 0.0:
+                styles.append((kind, Style(tuple(p.color), float(p.opacity), float(p.width), p.unit == 'SCENE',
+                                           float(p.min_pixels), float(p.taper))))
+    if 'WIRE' in debug:
+        styles.append(("wire", Style(DEBUG_COLORS["wire"], 1.0, 1.0, False, 0.0, 0.0)))
+    if not styles and 'WHITEOUT' not in debug:
+        return None
+    marks = 0
+    for m in s.marks:
+        marks |= _MARK_BITS[m]
+    hidden = float(s.hidden_opacity) if s.hidden_lines == 'DIMMED' else 0.0
+    import math
+    return LineSettings(tuple(styles), math.degrees(s.crease_angle), marks, hidden, 'WHITEOUT' in debug)
+
+
+@dataclass
+class LineSegments:
+    """Object-space segments of one line type: ends, the two face normals (for the depth bias),
+    and per end the distance to its chain's nearest free end over the chain's length."""
+    p0: np.ndarray
+    p1: np.ndarray
+    n1: np.ndarray
+    n2: np.ndarray
+    taper: np.ndarray
+
+    def __len__(self):
+        return len(self.p0)
+
+
+def taper_params(links, chains):
+    """(N, 2) distance from each item end to its chain's nearest free end / chain length."""
+    if len(links) == 0:
+        return np.zeros((0, 2), np.float32)
+    c = chains[links["chain"]]
+    length = np.maximum(c["length"], 1e-30)
+    out = np.full((len(links), 2), NO_TAPER, np.float32)
+    for k, s in enumerate((links["s0"], links["s1"])):
+        d = np.full(len(links), np.inf)
+        d = np.where(c["flags"] & native.CHAIN_START_FREE, np.minimum(d, s), d)
+        d = np.where(c["flags"] & native.CHAIN_END_FREE, np.minimum(d, c["length"] - s), d)
+        out[:, k] = np.where(np.isfinite(d), np.maximum(d, 0.0) / length, NO_TAPER)
+    return out
+
+
+def _edge_segments(edge_data, mesh, selected, taper):
+    sel = np.flatnonzero(selected).astype(np.uint32)
+    e = edge_data.edges[sel]
+    n = edge_data.normals[sel]
+    if taper and len(sel):
+        t = taper_params(*mesh.chain_edges(sel))
+    else:
+        t = np.full((len(sel), 2), NO_TAPER, np.float32)
+    return LineSegments(edge_data.positions[e[:, 0]], edge_data.positions[e[:, 1]],
+                        np.ascontiguousarray(n[:, :3]), np.ascontiguousarray(n[:, 3:]), t)
+
+
+def static_lines(edge_data, mesh, settings):
+    """Line type -> LineSegments for the view-independent types of `settings`."""
+    if settings is None:
+        return {}
+    d = edge_data
+    flags = d.flags
+    usable = (flags & native.EDGE_DEGENERATE) == 0
+    pick = {
+        "border": (flags & native.EDGE_BORDER) != 0,
+        "crease": ((flags & native.EDGE_MANIFOLD) != 0) & (d.angles > settings.crease_deg),
+        "material": (flags & native.EDGE_MATERIAL_BOUNDARY) != 0,
+        "marked": (flags & settings.marks) != 0,
+        "wire": np.ones(len(flags), bool),
+    }
+    out = {}
+    for kind, style in settings.styles:
+        if kind in pick:
+            out[kind] = _edge_segments(d, mesh, pick[kind] & usable, style.taper > 0.0)
+    return out
+
+
+def view_lines(extract, index, matrix, camera, settings, counters=None):
+    """Silhouettes and smooth contours of instance `index` of `extract` seen from `camera`:
+    type -> LineSegments. One native view update per instance; chains only where tapered."""
+    kinds = [k for k in settings.types if k in VIEW_TYPES] if settings else []
+    if not kinds:
+        return {}
+    # One native view per instance (each sees the camera from its own object space), kept so an
+    # unchanged view costs the library a comparison.
+    views = extract.views.get(index)
+    if views is None:
+        views = extract.views[index] = native.View(extract.native)
+    cam = native.make_camera(object_to_world=matrix, eye=None if camera.orthographic else camera.eye,
+                             view_dir=camera.view_dir if camera.orthographic else None)
+    what = (native.VIEW_SILHOUETTES if "silhouette" in kinds else 0) | (native.VIEW_CONTOURS if "contour" in kinds else 0)
+    views.update(cam, what)
+    if counters is not None:
+        counters.view_calls += 1
+    out = {}
+    d = extract.edge_data
+    if "silhouette" in kinds:
+        edges = views.silhouettes()
+        selected = np.zeros(len(d.flags), bool)
+        selected[edges] = True
+        out["silhouette"] = _edge_segments(d, extract.native, selected, settings.style("silhouette").taper > 0.0)
+    if "contour" in kinds:
+        pts, tris = views.contours()
+        fn = extract.face_normals()[tris] if len(tris) else np.zeros((0, 3), np.float32)
+        if settings.style("contour").taper > 0.0 and len(tris):
+            t = taper_params(*views.contour_chains())
+        else:
+            t = np.full((len(tris), 2), NO_TAPER, np.float32)
+        out["contour"] = LineSegments(np.ascontiguousarray(pts[:, 0]), np.ascontiguousarray(pts[:, 1]), fn, fn, t)
+    return out

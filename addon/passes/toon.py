@@ -1,0 +1,96 @@
+"""Textures of toon shading: a material's shade ramp (256 x 1) and X-Toon map, built on demand
+and cached by their contents, so an unchanged material uploads nothing."""
+import numpy as np
+
+from .. import compat
+
+RAMP_SIZE = 256
+_ramps = {}
+_maps = {}
+
+
+def ramp_texels(stops, smooth, size=RAMP_SIZE):
+    """(size, 4) colours at x = i / (size - 1). Stepped: the last stop at or below x (the first
+    stop below it); smooth: linear between stops, constant outside them."""
+    pos = np.array([p for p, _ in stops], np.float64)
+    col = np.array([c for _, c in stops], np.float64)
+    x = np.arange(size) / (size - 1)
+    if smooth:
+        rgb = np.stack([np.interp(x, pos, col[:, k]) for k in range(3)], axis=1)
+    else:
+        # A stop at x holds from x on; a tiny tolerance keeps x = position on the stop's side.
+        rgb = col[np.clip(np.searchsorted(pos, x + 1e-9, side="right") - 1, 0, len(pos) - 1)]
+    return np.c_[rgb, np.ones(size)].astype(np.float32)
+
+
+def _upload(rgba):
+    import gpu
+    h, w = rgba.shape[:2] if rgba.ndim == 3 else (1, rgba.shape[0])
+    flat = np.ascontiguousarray(rgba, np.float32).ravel()
+    return compat.texture((w, h), 'RGBA32F', gpu.types.Buffer('FLOAT', flat.size, flat))
+
+
+def ramp_texture(toon):
+    key = (toon.ramp, toon.smooth)
+    tex = _ramps.get(key)
+    if tex is None:
+        tex = _ramps[key] = _upload(ramp_texels(toon.ramp, toon.smooth))
+    return tex
+
+
+def builtin_map(base, width=64, height=32):
+    """X-Toon's default map: two soft bands of the material's colour along x, fading towards a
+    light grey along y (detail falls off with distance, as in X-Toon's aerial perspective)."""
+    x = (np.arange(width) + 0.5) / width
+    y = (np.arange(height) + 0.5) / height
+    lit = 0.35 + 0.65 / (1.0 + np.exp(-(x - 0.5) * 40.0))
+    col = lit[None, :, None] * np.asarray(base, np.float64)[None, None, :]
+    grey = np.full(3, 0.6)
+    fade = (0.85 * y)[:, None, None]
+    rgb = (1.0 - fade) * col + fade * grey
+    return np.concatenate([rgb, np.ones((height, width, 1))], axis=2).astype(np.float32)
+
+
+def _srgb_to_linear(c):
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def image_texels(image):
+    """(h, w, 4) scene-linear texels of a Blender image (rows bottom-up, as Blender stores them)."""
+    w, h = image.size
+    if w < 2 or h < 2:
+        raise ValueError(f"X-Toon image '{image.name}' is {w} x {h}; it needs at least 2 x 2 pixels")
+    px = np.empty(w * h * image.channels, np.float32)
+    image.pixels.foreach_get(px)
+    px = px.reshape(h, w, image.channels)
+    if image.channels < 4:
+        px = np.concatenate([px, np.ones((h, w, 4 - image.channels), np.float32)], axis=2)
+    if not image.is_float and image.colorspace_settings.name == 'sRGB':
+        px[..., :3] = _srgb_to_linear(px[..., :3])
+    return px
+
+
+def map_texture(toon, base):
+    """The X-Toon map of a material: its image, or the built-in map of its colour."""
+    if toon.image is None:
+        key = ("builtin", tuple(round(c, 6) for c in base))
+        make = lambda: builtin_map(base)  # noqa: E731
+    else:
+        key = ("image", toon.image.name_full, tuple(toon.image.size))
+        make = lambda: image_texels(toon.image)  # noqa: E731
+    tex = _maps.get(key)
+    if tex is None:
+        tex = _maps[key] = _upload(make())
+    return tex
+
+
+def dummy():
+    if "dummy" not in _ramps:
+        _ramps["dummy"] = _upload(np.ones((2, 2, 4), np.float32))
+    return _ramps["dummy"]
+
+
+def forget_images():
+    """Images may have been edited: re-read them on next use."""
+    for key in [k for k in _maps if k[0] == "image"]:
+        del _maps[key]
