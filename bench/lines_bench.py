@@ -22,8 +22,11 @@ Crease threshold: 60 degrees between face normals (EdgeLight / Auto Smooth conve
 180 - 60 = 120 degrees between the faces for Freestyle and Line Art: the same edges.
 
 Each method renders once to warm up (shader compiles; that render also writes
-out/lines_bench/MESH_METHOD.png), then REPEAT timed renders; the median is kept. A method whose
+out/lines_bench/MESH_METHOD.png); then REPEAT rounds time every method once each, round-robin, so
+that the shared host's slow drifts hit all methods alike; the median is kept. A method whose
 warm-up took longer than --limit seconds is not repeated: its warm-up is recorded and noted.
+The Grease Pencil object stays in the scene with hide_render set except for its own render
+(render depsgraphs leave hidden objects out, so no other method evaluates Line Art).
 Writes a CSV (--out) and a markdown table beside it (same name, .md), and prints the table.
 """
 import argparse
@@ -43,6 +46,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
 CREASE_DEG = 60.0  # EdgeLight / Auto Smooth convention: angle between the face normals
 LINE_PX = 1.5
+VIEW_YAW_DEG = {"armadillo": 180.0}  # turn the model about Z to face the camera
 
 METHODS = [
     # key,               label
@@ -121,10 +125,14 @@ def read_off(path):
 
 
 def build_mesh_object(name, verts, faces):
-    """A flat-shaded mesh object, centred and scaled so its largest extent is 2, Y-up -> Z-up."""
+    """A flat-shaded mesh object, centred and scaled so its largest extent is 2, Y-up -> Z-up,
+    turned by VIEW_YAW_DEG about Z."""
     lo, hi = verts.min(axis=0), verts.max(axis=0)
     v = (verts - (lo + hi) / 2.0) * (2.0 / float((hi - lo).max()))
-    v = np.stack([v[:, 0], -v[:, 2], v[:, 1]], axis=1).astype(np.float32)  # Y-up -> Z-up
+    v = np.stack([v[:, 0], -v[:, 2], v[:, 1]], axis=1)  # Y-up -> Z-up
+    yaw = math.radians(VIEW_YAW_DEG.get(name, 0.0))
+    c, s_ = math.cos(yaw), math.sin(yaw)
+    v = np.stack([c * v[:, 0] - s_ * v[:, 1], s_ * v[:, 0] + c * v[:, 1], v[:, 2]], axis=1).astype(np.float32)
     if isinstance(faces, np.ndarray):
         counts = np.full(len(faces), faces.shape[1], dtype=np.int32)
         loops = faces.reshape(-1).astype(np.int32)
@@ -373,36 +381,14 @@ def edgelight_errors():
     return [m for lvl, m in mod.last_render.get("messages", []) if lvl == 'ERROR']
 
 
-def time_renders(label, args, png):
-    """Warm-up (writes png) then --repeat timed renders: (times in s, note)."""
-    warm = render_once(png)
-    log(f"  {label}: warm-up {warm * 1e3:.0f} ms")
-    if warm > args.limit:
-        return [warm], f"one frame only ({warm:.0f} s > {args.limit:.0f} s limit; includes warm-up)"
-    times = []
-    for i in range(args.repeat):
-        times.append(render_once())
-        log(f"  {label}: run {i + 1}/{args.repeat} {times[-1] * 1e3:.0f} ms")
-    return times, ""
-
-
-def time_lineart_eval(gp_ob, args):
-    """Median of --repeat re-evaluations of the Line Art object (tag + view layer update); the
-    first evaluation (when it was added) is the warm-up. Also checks an untagged update is ~0."""
+def time_eval(gp_ob):
+    """One re-evaluation of the Line Art object: flush pending updates, tag, time the update."""
     vl = bpy.context.view_layer
+    vl.update()
+    gp_ob.update_tag()
     t0 = time.perf_counter()
     vl.update()
-    warm = time.perf_counter() - t0
-    times = []
-    for _ in range(max(args.repeat, 1)):
-        gp_ob.update_tag()
-        t0 = time.perf_counter()
-        vl.update()
-        times.append(time.perf_counter() - t0)
-    t0 = time.perf_counter()
-    vl.update()
-    idle = time.perf_counter() - t0
-    return warm, times, idle
+    return time.perf_counter() - t0
 
 
 # ---------------------------------------------------------------------------------------------
@@ -417,48 +403,83 @@ def run_mesh(name, args, scene, cam, mat, have_el, have_lines, results):
     tris, edges = mesh_counts(ob)
     log(f"{name}: {tris} triangles, {edges} edges (loaded in {time.perf_counter() - t0:.1f} s)")
     row = {"mesh": name, "triangles": tris, "edges": edges}
-    png = lambda key: os.path.join(args.png_dir, f"{name}_{key}.png")
 
-    def record(key, times, note=""):
-        row[key] = {"times": times, "median": statistics.median(times) if times else None, "note": note}
-        if times:
-            log(f"{name} {key}: median {row[key]['median'] * 1e3:.1f} ms {note}")
-        else:
-            log(f"{name} {key}: {note}")
-
-    # 1. EdgeLight, surface only and with lines
-    if have_el:
-        set_edgelight(scene, lines=False)
-        times, note = time_renders("EdgeLight", args, png("edgelight"))
-        errs = edgelight_errors()
-        record("edgelight", times, note + ("; ERROR: " + "; ".join(errs) if errs else ""))
-        if have_lines:
-            set_edgelight(scene, lines=True)
-            times, note = time_renders("EdgeLight + lines", args, png("edgelight_lines"))
-            errs = edgelight_errors()
-            record("edgelight_lines", times, note + ("; ERROR: " + "; ".join(errs) if errs else ""))
-        else:
-            record("edgelight_lines", [], "edgelight lines: not available")
-    else:
-        record("edgelight", [], "EdgeLight add-on not available")
-        record("edgelight_lines", [], "EdgeLight add-on not available")
-
-    # 2-3. EEVEE without and with Freestyle
-    set_eevee(scene, freestyle=False)
-    record("eevee", *time_renders("EEVEE", args, png("eevee")))
-    set_eevee(scene, freestyle=True)
-    record("eevee_freestyle", *time_renders("EEVEE + Freestyle", args, png("eevee_freestyle")))
-    set_eevee(scene, freestyle=False)
-
-    # 4. Line Art: modifier evaluation, then an EEVEE render with it
+    # The Line Art object exists throughout, hidden from render except for its own render:
+    # render depsgraphs leave hide_render objects out, so the other methods never evaluate it.
     gp_ob = add_lineart(scene, ob)
-    warm, times, idle = time_lineart_eval(gp_ob, args)
-    strokes = lineart_stroke_count(gp_ob)
-    log(f"  Line Art: first evaluation {warm * 1e3:.0f} ms, {strokes} strokes, "
-        f"untagged update {idle * 1e3:.2f} ms")
-    record("lineart_eval", times, "" if strokes else "Line Art produced no strokes")
-    row["lineart_strokes"] = strokes
-    record("eevee_lineart", *time_renders("EEVEE + Line Art", args, png("eevee_lineart")))
+    gp_ob.hide_render = True
+    bpy.context.view_layer.update()
+    row["lineart_strokes"] = lineart_stroke_count(gp_ob)
+
+    def lineart_render_setup():
+        set_eevee(scene, freestyle=False)
+        gp_ob.hide_render = False
+
+    setups = {
+        "edgelight": lambda: set_edgelight(scene, lines=False),
+        "edgelight_lines": lambda: set_edgelight(scene, lines=True),
+        "eevee": lambda: set_eevee(scene, freestyle=False),
+        "eevee_freestyle": lambda: set_eevee(scene, freestyle=True),
+        "lineart_eval": None,
+        "eevee_lineart": lineart_render_setup,
+    }
+    skipped = {}
+    if not have_el:
+        skipped["edgelight"] = skipped["edgelight_lines"] = "EdgeLight add-on not available"
+    elif not have_lines:
+        skipped["edgelight_lines"] = "edgelight lines: not available"
+    if not row["lineart_strokes"]:
+        log(f"  WARNING: Line Art produced no strokes on {name}")
+    active = [key for key, _ in METHODS if key not in skipped]
+    times = {key: [] for key in active}
+    notes = {key: [] for key in active}
+
+    def measure(key, png=None):
+        gp_ob.hide_render = True
+        if key == "lineart_eval":
+            return time_eval(gp_ob)
+        setups[key]()
+        t = render_once(png)
+        if key.startswith("edgelight"):
+            for err in edgelight_errors():
+                if err not in notes[key]:
+                    notes[key].append("ERROR: " + err)
+        return t
+
+    # Warm-ups, one per method (shader compiles, first Line Art evaluation); each writes its PNG.
+    over_limit = {}
+    for key in active:
+        png = None if key == "lineart_eval" else os.path.join(args.png_dir, f"{name}_{key}.png")
+        warm = measure(key, png)
+        log(f"  {name} {key}: warm-up {warm * 1e3:.0f} ms")
+        if warm > args.limit:
+            over_limit[key] = warm
+            times[key].append(warm)
+            notes[key].append(f"one frame only ({warm:.0f} s > {args.limit:.0f} s limit; includes warm-up)")
+
+    # Timed runs, round-robin over the methods so that the shared host's drifts hit all alike.
+    for i in range(args.repeat):
+        for key in active:
+            if key in over_limit:
+                continue
+            times[key].append(measure(key))
+        log(f"  {name} round {i + 1}/{args.repeat}: " + ", ".join(
+            f"{key} {times[key][-1] * 1e3:.0f}" for key in active if key not in over_limit) + " ms")
+    gp_ob.hide_render = True
+    scene.render.use_freestyle = False
+
+    for key, _ in METHODS:
+        if key in skipped:
+            row[key] = {"times": [], "median": None, "note": skipped[key]}
+        else:
+            row[key] = {"times": times[key], "median": statistics.median(times[key]), "note": "; ".join(notes[key])}
+            log(f"{name} {key}: median {row[key]['median'] * 1e3:.1f} ms {row[key]['note']}")
+    if not row["lineart_strokes"]:
+        row["lineart_eval"]["note"] = "Line Art produced no strokes"
+    t0 = time.perf_counter()
+    bpy.context.view_layer.update()
+    log(f"  untagged depsgraph update: {(time.perf_counter() - t0) * 1e3:.2f} ms; "
+        f"Line Art strokes: {row['lineart_strokes']}")
 
     # Unlinked, not freed: in 3.4 setting target_material from Python adds no user, so freeing
     # the modifier reports an "ID user decrement error" on the ink material.
@@ -499,7 +520,7 @@ def write_outputs(args, results, have_el, have_lines):
     load = ", ".join(f"{x:.2f}" for x in os.getloadavg())
     lines = [
         f"Blender {bpy.app.version_string}, {args.width}x{args.height}, 1 sample per pixel, "
-        f"median of {args.repeat} renders after a warm-up, ms per frame; crease {CREASE_DEG:.0f}° "
+        f"median of {args.repeat} round-robin runs after a warm-up, ms per frame; crease {CREASE_DEG:.0f}° "
         f"between face normals (Freestyle and Line Art: {180 - CREASE_DEG:.0f}° face angle); "
         f"{datetime.date.today().isoformat()}, load {load}.",
         "",

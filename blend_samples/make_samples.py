@@ -5,6 +5,10 @@
 cube.blend: seed 000's figure 3, a unit cube under one sun, EdgeLight on every edge.
 fandisk.blend: libcgal-demo's mechanical part (MESH_DIR/fandisk.off), creases above 30 degrees.
 prop.blend: a low-poly crate whose chosen edges carry bevel weights.
+toon.blend: fandisk again, toon-shaded with a three-band ramp, inked silhouettes and creases
+  above 60 degrees, and highlights on the gentler edges between 30 and 60 degrees.
+
+A third argument, a comma-separated list of names (cube,fandisk,prop,toon), makes only those.
 """
 import math
 import os
@@ -15,6 +19,7 @@ import bpy
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 OUT = os.path.abspath(argv[0] if argv else os.path.dirname(__file__))
 MESH_DIR = argv[1] if len(argv) > 1 else "/usr/share/doc/libcgal-dev"
+ONLY = set(argv[2].split(",")) if len(argv) > 2 else None
 
 
 def reset(engine="EDGELIGHT"):
@@ -132,6 +137,26 @@ def fandisk_scene(mesh_dir):
     return scene
 
 
+def toon_scene(mesh_dir):
+    scene = fandisk_scene(mesh_dir)
+    mat = bpy.data.materials["Steel"]
+    s = mat.edgelight
+    s.shading = 'RAMP'
+    for position, color in ((0.0, (0.05, 0.07, 0.12)), (0.3, (0.22, 0.3, 0.45)), (0.75, (0.55, 0.68, 0.85))):
+        stop = s.ramp.add()
+        stop.position, stop.color = position, color
+    s.radius, s.K, s.use_custom_shininess, s.shininess = 0.006, 1.5, True, 40.0
+    lines = scene.edgelight
+    lines.use_lines = True
+    lines.crease_angle = math.radians(60)
+    lines.line_silhouette.width = 2.5
+    lines.line_crease.width = 1.5
+    lines.line_crease.color = (0.02, 0.03, 0.08)
+    lines.line_border.width = 2.0
+    lines.samples = 8
+    return scene
+
+
 def prop_scene():
     import bmesh
     scene = reset()
@@ -166,9 +191,9 @@ def save(name):
 
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
-    cube_scene()
-    save("cube.blend")
-    fandisk_scene(MESH_DIR)
-    save("fandisk.blend")
-    prop_scene()
-    save("prop.blend")
+    makers = {"cube": cube_scene, "fandisk": lambda: fandisk_scene(MESH_DIR), "prop": prop_scene,
+              "toon": lambda: toon_scene(MESH_DIR)}
+    for name, make in makers.items():
+        if ONLY is None or name in ONLY:
+            make()
+            save(name + ".blend")

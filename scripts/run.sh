@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The README's main job: set up, build, install the add-on into an isolated Blender user
-# directory, and render the cube sample (seed 000's figure 3) headless with EdgeLight to a PNG.
+# directory, and render the toon sample (fandisk: toon ramp, ink lines, edge highlights) headless
+# with EdgeLight to a PNG. `./scripts/run.sh cube` renders seed 000's figure 3 instead.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
-sample="${1:-cube}"
+sample="${1:-toon}"
 "$root/scripts/setup.sh"
 BUILD_DIR="$build" "$root/scripts/build.sh" >/dev/null
 user_scripts="$(BUILD_DIR="$build" "$root/scripts/install_addon.sh")"

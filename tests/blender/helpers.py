@@ -74,3 +74,62 @@ def edge_profile(rec, image, a, b, ts, offsets):
     n = np.array([-d[1], d[0]])
     grid = xy[:, None, :] + np.asarray(offsets)[None, :, None] * n[None, None, :]
     return sample(image, grid)
+
+
+def empty_scene(width=400, height=400, **scene_settings):
+    """A factory-empty scene rendered by EdgeLight: no objects, a dark world, one sample."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    import addon_utils
+    addon_utils.enable("edgelight", default_set=True)
+    scene = bpy.context.scene
+    scene.render.engine = "EDGELIGHT"
+    scene.render.resolution_x, scene.render.resolution_y = width, height
+    scene.render.resolution_percentage = 100
+    scene.view_settings.view_transform = 'Standard'
+    world = bpy.data.worlds.new("World")
+    world.use_nodes = False
+    world.color = (0.05, 0.05, 0.05)
+    scene.world = world
+    scene.edgelight.samples = scene_settings.pop("samples", 1)
+    for key, value in scene_settings.items():
+        setattr(scene.edgelight, key, value)
+    return scene
+
+
+def look_at(ob, location, target):
+    from mathutils import Vector
+    ob.location = location
+    ob.rotation_euler = (Vector(target) - Vector(location)).to_track_quat('-Z', 'Y').to_euler()
+
+
+def add_camera(location, target=(0.0, 0.0, 0.0), lens=50.0):
+    scene = bpy.context.scene
+    ob = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
+    ob.data.lens = lens
+    scene.collection.objects.link(ob)
+    look_at(ob, location, target)
+    scene.camera = ob
+    return ob
+
+
+def add_sun(direction_to_light=(0.3, -0.5, 1.0), strength=3.0, name="Sun"):
+    """A sun shining from `direction_to_light` towards the origin."""
+    ob = bpy.data.objects.new(name, bpy.data.lights.new(name, 'SUN'))
+    ob.data.energy = strength
+    bpy.context.scene.collection.objects.link(ob)
+    d = np.asarray(direction_to_light, float)
+    look_at(ob, tuple(d), (0.0, 0.0, 0.0))
+    return ob
+
+
+def only_lines(scene, **enabled):
+    """Turns lines on with only the named types enabled: only_lines(scene, crease=4.0) draws
+    creases 4 px wide."""
+    s = scene.edgelight
+    s.use_lines = True
+    for name in ("silhouette", "crease", "border", "contour", "marked", "material"):
+        style = getattr(s, "line_" + name)
+        style.enabled = name in enabled
+        if name in enabled:
+            style.width = enabled[name]
+    return s

@@ -17,8 +17,9 @@ sys.path.insert(0, HERE)
 def main():
     args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     loader = unittest.TestLoader()
-    if "-k" in args:
-        loader.testNamePatterns = [f"*{args[args.index('-k') + 1]}*"]
+    patterns = [f"*{args[i + 1]}*" for i, a in enumerate(args[:-1]) if a == "-k"]
+    if patterns:
+        loader.testNamePatterns = patterns
     suite = loader.discover(HERE, pattern="test_*.py")
     result = unittest.TextTestRunner(verbosity=2, stream=sys.stdout).run(suite)
     failed = len(result.failures) + len(result.errors)

@@ -1,0 +1,260 @@
+"""Ink lines in final renders: silhouettes, creases, borders, joins, taper, hidden lines,
+widths in scene units, and the debug views."""
+import math
+import unittest
+
+import bpy
+import numpy as np
+
+import helpers
+
+
+def coverage(d, r):
+    """line.frag.glsl's box-filtered coverage of a pixel at distance d from a stroke of half-width r."""
+    return np.clip(np.minimum(d + r, 0.5) - np.maximum(d - r, -0.5), 0.0, 1.0)
+
+
+def alpha_at(rec, xy):
+    return helpers.sample(rec["lines"][..., 3], np.asarray(xy, float))
+
+
+def cube_edges(size=2.0):
+    h = size / 2
+    corners = np.array([[x, y, z] for x in (-h, h) for y in (-h, h) for z in (-h, h)])
+    edges = [(i, j) for i in range(8) for j in range(i + 1, 8) if np.sum(corners[i] != corners[j]) == 1]
+    return corners, edges
+
+
+def visible_cube_edges(corners, edges, eye):
+    """An edge of a convex box is visible when one of its two faces faces the eye."""
+    out = []
+    for i, j in edges:
+        a, b = corners[i], corners[j]
+        mid = (a + b) / 2
+        axis = np.flatnonzero(a == b)  # the two axes along which the edge sits on a face
+        faces = [np.eye(3)[k] * np.sign(mid[k]) for k in axis]
+        out.append(any(np.dot(n, np.asarray(eye) - mid) > 0 for n in faces))
+    return out
+
+
+class Silhouettes(unittest.TestCase):
+    def test_uv_sphere_silhouette_is_a_closed_ring_at_the_expected_radius(self):
+        scene = helpers.empty_scene(400, 400)
+        helpers.only_lines(scene, silhouette=3.0)
+        bpy.ops.mesh.primitive_uv_sphere_add(segments=96, ring_count=48, radius=1.0)
+        bpy.ops.object.shade_smooth()
+        D = 6.0
+        helpers.add_camera((0.0, -D, 0.0))
+        helpers.add_sun()
+        rec = helpers.render()
+        f_px = rec["camera"].px_per_unit
+        expected = f_px * math.tan(math.asin(1.0 / D))  # the tangent cone's image circle
+        a = rec["lines"][..., 3]
+        ys, xs = np.nonzero(a > 0.5)
+        r = np.hypot(xs + 0.5 - 200.0, ys + 0.5 - 200.0)
+        angle = np.degrees(np.arctan2(ys + 0.5 - 200.0, xs + 0.5 - 200.0)) % 360.0
+        ring_r = np.average(r, weights=a[ys, xs])
+        print(f"silhouette ring: mean radius {ring_r:.2f} px, expected {expected:.2f} px, spread {r.min():.2f}..{r.max():.2f}")
+        self.assertLess(abs(ring_r - expected), 0.5)
+        self.assertLess(np.abs(r - expected).max(), 1.5 + 1.0)  # half the 3 px width plus a pixel
+        bins = np.bincount((angle // 1.0).astype(int), minlength=360)
+        self.assertTrue((bins > 0).all(), f"gaps at degrees {np.flatnonzero(bins == 0)}")
+        # Nothing inside the ring: a sphere has no other silhouette from outside.
+        inner = np.hypot(*np.meshgrid(np.arange(400) + 0.5 - 200.0, np.arange(400) + 0.5 - 200.0)) < expected - 3.0
+        self.assertEqual(int((a[inner] > 0).sum()), 0)
+
+
+class Creases(unittest.TestCase):
+    def render_cube(self, **scene_settings):
+        scene = helpers.empty_scene(480, 480, **scene_settings)
+        helpers.only_lines(scene, crease=3.0)
+        bpy.ops.mesh.primitive_cube_add(size=2.0)
+        self.eye = (4.0, -5.5, 3.5)
+        helpers.add_camera(self.eye)
+        helpers.add_sun()
+        return helpers.render()
+
+    def edge_alphas(self, rec):
+        """Visibility per cube edge and the line alpha along its middle; points of hidden edges
+        whose image passes within 3 px of a visible edge's image are NaN (not judged)."""
+        corners, edges = cube_edges()
+        vis = np.array(visible_cube_edges(corners, edges, self.eye))
+        ts = np.linspace(0.25, 0.75, 11)
+        shown = [helpers.project(rec, corners[[i, j]]) for (i, j), v in zip(edges, vis) if v]
+        out = []
+        for (i, j), v in zip(edges, vis):
+            xy = helpers.project(rec, corners[i] + ts[:, None] * (corners[j] - corners[i]))
+            a = alpha_at(rec, xy).astype(float)
+            if not v:
+                for p, q in shown:
+                    u = np.clip((xy - p) @ (q - p) / np.dot(q - p, q - p), 0, 1)
+                    a[np.linalg.norm(xy - (p + u[:, None] * (q - p)), axis=1) < 3.0] = np.nan
+            out.append(a)
+        return vis, np.array(out)
+
+    def test_cube_shows_its_visible_creases_and_no_hidden_ones(self):
+        vis, alpha = self.edge_alphas(self.render_cube())
+        self.assertEqual(int(vis.sum()), 9)
+        self.assertTrue((alpha[vis] > 0.99).all(), alpha[vis].min(axis=1))
+        hidden = alpha[~vis]
+        self.assertGreater(np.isfinite(hidden).sum(), 20, "enough points of hidden edges judged")
+        self.assertTrue((hidden[np.isfinite(hidden)] == 0.0).all(), np.nanmax(hidden, axis=1))
+
+    def test_hidden_creases_dimmed(self):
+        vis, alpha = self.edge_alphas(self.render_cube(hidden_lines='DIMMED', hidden_opacity=0.3))
+        self.assertTrue((alpha[vis] > 0.99).all())
+        hidden = alpha[~vis]
+        np.testing.assert_allclose(hidden[np.isfinite(hidden)], 0.3, atol=1e-4)
+
+    def test_crease_angle_threshold_follows_auto_smooth_convention(self):
+        scene = helpers.empty_scene(200, 200)
+        helpers.only_lines(scene, crease=2.0)
+        scene.edgelight.crease_angle = math.radians(90.5)  # a cube's edges are at 90 degrees
+        bpy.ops.mesh.primitive_cube_add(size=2.0)
+        helpers.add_camera((4.0, -5.5, 3.5))
+        helpers.add_sun()
+        rec = helpers.render()
+        self.assertEqual(rec["stats"].lines_drawn, 0)
+        scene.edgelight.crease_angle = math.radians(89.5)
+        rec = helpers.render()
+        self.assertEqual(rec["stats"].lines_drawn, 12)
+
+
+class Borders(unittest.TestCase):
+    def test_open_cylinder_shows_its_border_circles(self):
+        scene = helpers.empty_scene(400, 400)
+        helpers.only_lines(scene, border=3.0)
+        bpy.ops.mesh.primitive_cylinder_add(vertices=64, radius=1.0, depth=2.0, end_fill_type='NOTHING')
+        eye = np.array((0.0, -6.0, 4.0))
+        helpers.add_camera(tuple(eye))
+        helpers.add_sun()
+        rec = helpers.render()
+        self.assertEqual(rec["stats"].lines_drawn, 128)
+        phi = np.linspace(0.0, 2.0 * math.pi, 360, endpoint=False)
+        ring = np.c_[np.cos(phi), np.sin(phi), np.zeros_like(phi)]
+        top = alpha_at(rec, helpers.project(rec, ring + (0, 0, 1.0)))
+        self.assertTrue((top > 0.99).all(), f"top circle: {np.sum(top <= 0.99)} of 360 points without ink")
+        # The bottom circle's front half (outward normal towards the eye) is in view.
+        bottom = ring + (0, 0, -1.0)
+        front = np.einsum("ij,ij->i", ring, eye - bottom) > 0.3
+        low = alpha_at(rec, helpers.project(rec, bottom[front]))
+        self.assertTrue((low > 0.99).all(), f"bottom front: {np.sum(low <= 0.99)} of {front.sum()} without ink")
+
+
+class Joins(unittest.TestCase):
+    def test_joins_leave_no_gap_at_a_cube_corner(self):
+        """Round caps: around the corner where three creases meet, every pixel is covered at
+        least as much as a disc of the stroke's radius covers it (seed 001's fin gap is a notch
+        on the outside of the join)."""
+        eye = (4.0, -5.5, 3.5)
+        for width in (1.0, 4.0, 12.0):
+            scene = helpers.empty_scene(480, 480)
+            helpers.only_lines(scene, crease=width, silhouette=width)
+            bpy.ops.mesh.primitive_cube_add(size=2.0)
+            helpers.add_camera(eye)
+            helpers.add_sun()
+            rec = helpers.render()
+            a = rec["lines"][..., 3]
+            for corner in ((1.0, -1.0, 1.0), (1.0, -1.0, -1.0), (-1.0, -1.0, 1.0)):  # inner, outline
+                c = helpers.project(rec, [corner])[0]
+                r = width / 2.0
+                xs, ys = np.meshgrid(np.arange(a.shape[1]) + 0.5, np.arange(a.shape[0]) + 0.5)
+                d = np.hypot(xs - c[0], ys - c[1])
+                near = d <= r + 0.5
+                need = coverage(d[near], r) - 1e-4
+                short = a[near] < need
+                self.assertFalse(short.any(), f"width {width}, corner {corner}: {short.sum()} gap pixels, "
+                                              f"worst {np.min(a[near] - need):.3f}")
+
+
+class Taper(unittest.TestCase):
+    def test_open_chain_tapers_to_its_free_ends(self):
+        scene = helpers.empty_scene(600, 200)
+        s = helpers.only_lines(scene, marked=10.0)
+        s.line_marked.taper = 0.5
+        bpy.ops.mesh.primitive_grid_add(x_subdivisions=20, y_subdivisions=2, size=4.0)
+        mesh = bpy.context.object.data
+        # Mark the middle row of edges (y = 0) for Freestyle: one open chain across the grid.
+        co = np.array([v.co[:] for v in mesh.vertices])
+        for e in mesh.edges:
+            a, b = co[e.vertices[0]], co[e.vertices[1]]
+            e.use_freestyle_mark = abs(a[1]) < 1e-6 and abs(b[1]) < 1e-6
+        helpers.add_camera((0.0, 0.0, 9.0), lens=50.0)
+        helpers.add_sun((0.0, 0.0, 1.0))
+        rec = helpers.render()
+        a = rec["lines"][..., 3]
+        xs = np.linspace(-1.9, 1.9, 39)
+        widths = []
+        for x in xs:
+            px = helpers.project(rec, [(x, 0.0, 0.0)])[0]
+            col = a[:, int(px[0])]
+            widths.append(col.sum())  # ink across the line = its width in pixels
+        widths = np.array(widths)
+        # Taper 0.5: the width grows linearly from the ends to full at the middle.
+        length = 4.0
+        full = widths[len(xs) // 2]
+        expected = 10.0 * np.clip((length / 2 - np.abs(xs)) / (0.5 * length), 0, 1)
+        print("tapered widths:", np.round(widths[::4], 2))
+        self.assertGreater(full, 9.0)
+        np.testing.assert_allclose(widths, expected, atol=1.2)
+
+
+class ScaleAndDebug(unittest.TestCase):
+    def test_scene_unit_width_thins_with_distance_down_to_the_floor(self):
+        scene = helpers.empty_scene(400, 400)
+        s = helpers.only_lines(scene, border=0.05)
+        s.line_border.unit = 'SCENE'
+        s.line_border.min_pixels = 2.0
+        bpy.ops.mesh.primitive_plane_add(size=2.0)
+        cam = helpers.add_camera((0.0, 0.0, 5.0))
+        helpers.add_sun((0.0, 0.0, 1.0))
+        widths = {}
+        for dist in (5.0, 10.0, 80.0):
+            cam.location = (0.0, 0.0, dist)
+            rec = helpers.render()
+            px = helpers.project(rec, [(0.0, -1.0, 0.0)])[0]
+            widths[dist] = rec["lines"][:200, int(px[0]), 3].sum()  # the lower half: the y = -1 border only
+            expected = max(0.05 * rec["camera"].px_per_unit / dist, 2.0)
+            self.assertAlmostEqual(widths[dist], expected, delta=0.15 * expected + 0.2, msg=f"distance {dist}")
+        print("scene-unit widths by distance:", {k: round(v, 2) for k, v in widths.items()})
+
+    def test_whiteout_has_only_white_surface_pixels(self):
+        scene = helpers.empty_scene(300, 300, debug={'WHITEOUT'})
+        helpers.only_lines(scene, silhouette=2.0, crease=2.0)
+        bpy.ops.mesh.primitive_monkey_add()
+        helpers.add_camera((0.0, -5.0, 1.0))
+        helpers.add_sun()
+        rec = helpers.render()
+        surf = rec["surface"][..., 3] == 1.0
+        clear = surf & (rec["lines"][..., 3] == 0.0)
+        self.assertGreater(clear.sum(), 5000)
+        self.assertTrue(np.array_equal(rec["pixels"][clear][:, :3], np.ones((clear.sum(), 3), np.float32)))
+        self.assertEqual(int((rec["highlight"][..., 3] > 0).sum()), 0, "no highlights in whiteout")
+        self.assertGreater(int((rec["lines"][..., 3] > 0.99).sum()), 500, "the lines are drawn")
+
+    def test_edge_types_view_colours_silhouettes_red_and_creases_yellow(self):
+        scene = helpers.empty_scene(480, 480, debug={'EDGE_TYPES'})
+        scene.edgelight.use_lines = False  # the debug view draws every type anyway
+        bpy.ops.mesh.primitive_cube_add(size=2.0)
+        eye = (4.0, -5.5, 3.5)
+        helpers.add_camera(eye)
+        helpers.add_sun()
+        rec = helpers.render()
+        ln = rec["lines"]
+        # The top face's front edge is a crease inside the outline; the far top edge is on it.
+        inner = helpers.project(rec, [(0.0, -1.0, 1.0)])[0]
+        outline = helpers.project(rec, [(0.0, 1.0, 1.0)])[0]
+        np.testing.assert_array_equal(helpers.sample(ln, inner)[:3], (1.0, 1.0, 0.0))
+        np.testing.assert_array_equal(helpers.sample(ln, outline)[:3], (1.0, 0.0, 0.0))
+
+    def test_wire_view_draws_every_edge(self):
+        scene = helpers.empty_scene(300, 300, debug={'WIRE'})
+        bpy.ops.mesh.primitive_ico_sphere_add(subdivisions=2)
+        helpers.add_camera((0.0, -5.0, 1.0))
+        helpers.add_sun()
+        rec = helpers.render()
+        self.assertEqual(rec["stats"].lines_drawn, len(bpy.data.objects["Icosphere"].data.edges))
+
+
+if __name__ == "__main__":
+    unittest.main()

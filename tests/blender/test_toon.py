@@ -1,0 +1,136 @@
+"""Toon shading in final renders: the shade ramp (seed 003) and X-Toon (seed 004)."""
+import unittest
+
+import bpy
+import numpy as np
+
+import helpers
+
+DARK, LIGHT = (0.1, 0.05, 0.2), (0.9, 0.6, 0.3)
+
+
+def toon_sphere(location=(0.0, 0.0, 0.0), name="Toon"):
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=64, ring_count=32, radius=1.0, location=location)
+    bpy.ops.object.shade_smooth()
+    ob = bpy.context.object
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    mat.edgelight.enabled = False  # a sphere has no edges to round; keep the surface pure
+    ob.data.materials.append(mat)
+    return ob, mat
+
+
+def set_ramp(mat, stops, smooth=False):
+    s = mat.edgelight
+    s.shading = 'RAMP'
+    s.ramp_interpolation = 'LINEAR' if smooth else 'CONSTANT'
+    s.ramp.clear()
+    for position, color in stops:
+        stop = s.ramp.add()
+        stop.position, stop.color = position, color
+
+
+def surface_colours(rec):
+    surf = rec["surface"]
+    rgb = surf[surf[..., 3] == 1.0][:, :3]
+    colours, counts = np.unique(rgb, axis=0, return_counts=True)
+    return colours, counts, len(rgb)
+
+
+class Ramp(unittest.TestCase):
+    def render_sphere(self, stops, smooth=False, lights=1):
+        helpers.empty_scene(300, 300, highlights=False)
+        _, mat = toon_sphere()
+        set_ramp(mat, stops, smooth)
+        helpers.add_camera((0.0, -6.0, 0.0))
+        helpers.add_sun((1.0, -1.0, 0.5), strength=3.0)
+        if lights > 1:
+            helpers.add_sun((-1.0, -0.5, -0.3), strength=1.0, name="Fill")
+        return helpers.render()
+
+    def test_two_band_ramp_gives_exactly_two_surface_colours(self):
+        for lights in (1, 2):
+            rec = self.render_sphere([(0.0, DARK), (0.5, LIGHT)], lights=lights)
+            colours, counts, total = surface_colours(rec)
+            print(f"{lights} light(s): colours {colours.round(3).tolist()} counts {counts.tolist()}")
+            self.assertEqual(len(colours), 2)
+            np.testing.assert_allclose(sorted(map(tuple, colours)), sorted([DARK, LIGHT]), atol=1e-6)
+            self.assertTrue((counts > 0.1 * total).all())
+            # The whole image, lines and composite included, has the same two colours on the sphere.
+            px = rec["pixels"][rec["surface"][..., 3] == 1.0][:, :3]
+            self.assertEqual(len(np.unique(px, axis=0)), 2)
+
+    def test_band_boundary_is_where_n_dot_l_crosses_the_stop(self):
+        rec = self.render_sphere([(0.0, DARK), (0.5, LIGHT)])
+        # Points on the sphere where N.L is just above / below 0.5 fall in the light / dark band.
+        L = np.array((1.0, -1.0, 0.5)) / np.linalg.norm((1.0, -1.0, 0.5))
+        V = np.array((0.0, -1.0, 0.0))  # towards the camera
+        side = np.cross(L, V)
+        side /= np.linalg.norm(side)
+        perp = np.cross(side, L)  # unit, with L and side an orthonormal frame
+        for nl, expected in ((0.56, LIGHT), (0.44, DARK), (0.9, LIGHT), (0.1, DARK)):
+            n = nl * L + np.sqrt(1 - nl * nl) * perp  # a normal facing the camera with this N.L
+            if np.dot(n, V) < 0:  # keep the point on the hemisphere facing the camera
+                n = nl * L - np.sqrt(1 - nl * nl) * perp
+            xy = helpers.project(rec, [n])[0]
+            np.testing.assert_allclose(helpers.sample(rec["surface"], xy)[:3], expected, atol=1e-6, err_msg=f"N.L {nl}")
+
+    def test_smooth_ramp_blends_between_stops(self):
+        rec = self.render_sphere([(0.0, DARK), (1.0, LIGHT)], smooth=True)
+        colours, _, _ = surface_colours(rec)
+        self.assertGreater(len(colours), 50)
+        lo, hi = np.minimum(DARK, LIGHT), np.maximum(DARK, LIGHT)
+        self.assertTrue(((colours >= lo - 1e-6) & (colours <= hi + 1e-6)).all())
+
+
+class XToon(unittest.TestCase):
+    def test_colour_follows_distance_through_the_image(self):
+        helpers.empty_scene(400, 200, highlights=False)
+        near_ob, mat = toon_sphere((-1.6, 0.0, 0.0))
+        far_ob, _ = toon_sphere((6.0, 14.0, 0.0))
+        far_ob.data.materials[0] = mat
+        img = bpy.data.images.new("xtoon", 8, 8, float_buffer=True)
+        # Bottom rows red, top rows blue, the same across x: the colour depends on y only.
+        rows = np.linspace(0.0, 1.0, 8)
+        px = np.zeros((8, 8, 4), np.float32)
+        px[..., 0] = (1.0 - rows)[:, None]
+        px[..., 2] = rows[:, None]
+        px[..., 3] = 1.0
+        img.pixels.foreach_set(px.ravel())
+        s = mat.edgelight
+        s.shading, s.xtoon_image, s.xtoon_axis = 'XTOON', img, 'DEPTH'
+        s.xtoon_near, s.xtoon_far = 4.0, 20.0
+        cam = helpers.add_camera((0.0, -6.0, 0.0), target=(0.0, 0.0, 0.0), lens=35.0)
+        helpers.add_sun((0.3, -1.0, 0.4))
+        rec = helpers.render()
+        view = np.linalg.inv(np.array(cam.matrix_world))
+        for ob in (near_ob, far_ob):
+            centre = np.array(ob.location)
+            front = centre + (np.array(cam.location) - centre) / np.linalg.norm(np.array(cam.location) - centre)
+            depth = -(view @ np.r_[front, 1.0])[2]
+            y = np.clip((depth - 4.0) / 16.0, 0, 1)
+            got = helpers.sample(rec["surface"], helpers.project(rec, [front])[0])[:3]
+            print(f"{ob.name}: depth {depth:.2f} -> y {y:.3f}: colour {np.round(got, 4)}")
+            np.testing.assert_allclose(got, (1.0 - y, 0.0, y), atol=0.01)
+        near_c = helpers.sample(rec["surface"], helpers.project(rec, [near_ob.location])[0])
+        far_c = helpers.sample(rec["surface"], helpers.project(rec, [far_ob.location])[0])
+        self.assertGreater(near_c[0] - far_c[0], 0.5, "the near sphere is redder")
+        self.assertGreater(far_c[2] - near_c[2], 0.5, "the far sphere is bluer")
+
+    def test_orientation_axis_and_builtin_map(self):
+        helpers.empty_scene(300, 300, highlights=False)
+        _, mat = toon_sphere()
+        mat.edgelight.shading = 'XTOON'
+        mat.edgelight.xtoon_axis = 'ORIENTATION'
+        helpers.add_camera((0.0, -6.0, 0.0))
+        helpers.add_sun((0.0, -1.0, 0.0))  # behind the camera: N.L = N.V, x and y move together
+        rec = helpers.render()
+        surf = rec["surface"]
+        centre = helpers.sample(surf, np.array([150.0, 150.0]))[:3]
+        rim = helpers.sample(surf, helpers.project(rec, [(0.97, -0.24, 0.0)])[0])[:3]
+        # The built-in map: lit material colour facing the eye, greyer and darker at the outline.
+        self.assertGreater(centre.sum(), rim.sum() + 0.3)
+
+
+if __name__ == "__main__":
+    unittest.main()
