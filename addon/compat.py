@@ -91,9 +91,13 @@ def compat_panels():
     for name in dir(bpy.types):
         cls = getattr(bpy.types, name)
         engines = getattr(cls, "COMPAT_ENGINES", None)
-        if isinstance(engines, set) and ("BLENDER_RENDER" in engines or "BLENDER_WORKBENCH" in engines):
+        # 'BLENDER_RENDER' marks the engine-neutral panels (output, camera, light, colour
+        # management); Workbench-only ones (its lighting, colour, film) don't apply to EdgeLight.
+        if isinstance(engines, set) and "BLENDER_RENDER" in engines:
             if name.startswith(("MATERIAL_PT_", "EEVEE_MATERIAL_PT_")):
                 continue  # our own material panel replaces these
+            if "freestyle" in name.lower():
+                continue  # EdgeLight draws its own lines, Freestyle's settings would mislead
             panels.append(cls)
     return panels
 

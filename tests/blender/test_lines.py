@@ -64,6 +64,28 @@ class Silhouettes(unittest.TestCase):
         self.assertEqual(int((a[inner] > 0).sum()), 0)
 
 
+    def test_smooth_contour_of_a_sphere_is_a_closed_ring_inside_the_faces(self):
+        scene = helpers.empty_scene(400, 400)
+        helpers.only_lines(scene, contour=2.0)
+        bpy.ops.mesh.primitive_uv_sphere_add(segments=24, ring_count=12, radius=1.0)
+        bpy.ops.object.shade_smooth()
+        D = 6.0
+        helpers.add_camera((0.3, -D, 0.2))
+        helpers.add_sun()
+        rec = helpers.render()
+        self.assertGreater(rec["stats"].lines_drawn, 20)
+        a = rec["lines"][..., 3]
+        ys, xs = np.nonzero(a > 0.5)
+        c = helpers.project(rec, [(0.0, 0.0, 0.0)])[0]
+        r = np.hypot(xs + 0.5 - c[0], ys + 0.5 - c[1])
+        angle = np.degrees(np.arctan2(ys + 0.5 - c[1], xs + 0.5 - c[0])) % 360.0
+        bins = np.bincount((angle // 2.0).astype(int), minlength=180)
+        self.assertTrue((bins > 0).all(), "closed: ink in every 2-degree sector")
+        # A coarse sphere's interpolated contour runs inside the polygon outline, near the true circle.
+        expected = rec["camera"].px_per_unit * math.tan(math.asin(1.0 / np.linalg.norm((0.3, D, 0.2))))
+        self.assertLess(abs(np.median(r) - expected), 0.05 * expected)
+
+
 class Creases(unittest.TestCase):
     def render_cube(self, **scene_settings):
         scene = helpers.empty_scene(480, 480, **scene_settings)
@@ -139,6 +161,37 @@ class Borders(unittest.TestCase):
         front = np.einsum("ij,ij->i", ring, eye - bottom) > 0.3
         low = alpha_at(rec, helpers.project(rec, bottom[front]))
         self.assertTrue((low > 0.99).all(), f"bottom front: {np.sum(low <= 0.99)} of {front.sum()} without ink")
+
+
+class MarksAndMaterials(unittest.TestCase):
+    def cube(self, **lines):
+        scene = helpers.empty_scene(300, 300)
+        helpers.only_lines(scene, **lines)
+        bpy.ops.mesh.primitive_cube_add(size=2.0)
+        helpers.add_camera((4.0, -5.5, 3.5))
+        helpers.add_sun()
+        return scene, bpy.context.object
+
+    def test_marked_edges_follow_the_chosen_marks(self):
+        scene, ob = self.cube(marked=2.0)
+        me = ob.data
+        me.edges[0].use_freestyle_mark = True
+        me.edges[1].use_seam = True
+        me.edges[2].use_edge_sharp = True
+        counts = {}
+        for marks in ({'FREESTYLE'}, {'SEAM'}, {'FREESTYLE', 'SHARP'}, {'FREESTYLE', 'SHARP', 'SEAM'}):
+            scene.edgelight.marks = marks
+            counts[tuple(sorted(marks))] = helpers.render()["stats"].lines_drawn
+        self.assertEqual(list(counts.values()), [1, 1, 2, 3], counts)
+
+    def test_material_boundaries(self):
+        scene, ob = self.cube(material=2.0)
+        for name in ("A", "B"):
+            ob.data.materials.append(bpy.data.materials.new(name))
+        self.assertEqual(helpers.render()["stats"].lines_drawn, 0)
+        top = max(ob.data.polygons, key=lambda p: p.center.z)
+        top.material_index = 1  # the top face's four edges now separate A from B
+        self.assertEqual(helpers.render()["stats"].lines_drawn, 4)
 
 
 class Joins(unittest.TestCase):
