@@ -2,6 +2,7 @@
 // Counters: ns per triangle or per edge (the "per_*" rates are inverted to time per item).
 #include "bench_meshes.hpp"
 
+#include "chains.hpp"
 #include "classify.hpp"
 #include "contour.hpp"
 #include "mesh_build.hpp"
@@ -197,3 +198,31 @@ void BM_SilhouetteEdgePass(benchmark::State& state) {
 
 BENCHMARK(BM_FacingOnly)->Apply(meshes);
 BENCHMARK(BM_SilhouetteEdgePass)->Apply(meshes);
+
+namespace {
+
+// Chaining the silhouette edges of one view (what a tapered silhouette line costs per view on
+// top of the silhouette pass), per silhouette edge.
+void BM_ChainSilhouettes(benchmark::State& state) {
+    const auto& m = bench_mesh(int(state.range(0)));
+    auto data = el::build_mesh(desc_of(m));
+    std::vector<uint8_t> bits;
+    std::vector<uint32_t> sil;
+    el::compute_facing(*data, orbit(*data)[0], bits);
+    el::collect_silhouettes(*data, bits, sil);
+    std::vector<el::ChainItem> items(sil.size());
+    for (auto _ : state) {
+        for (size_t i = 0; i < sil.size(); ++i) {
+            const uint32_t a = data->topo.edge_vertices[2 * size_t(sil[i])], b = data->topo.edge_vertices[2 * size_t(sil[i]) + 1];
+            items[i] = el::ChainItem{{a, b}, {data->positions[a], data->positions[b]}};
+        }
+        el::Chains c = el::build_chains(items);
+        benchmark::DoNotOptimize(c.chains.data());
+    }
+    per_item(state, "ns_per_silhouette_edge", double(std::max<size_t>(sil.size(), 1)));
+    state.counters["silhouette_edges"] = double(sil.size());
+}
+
+}  // namespace
+
+BENCHMARK(BM_ChainSilhouettes)->Apply(meshes);

@@ -3,7 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <numeric>
+#include <utility>
 
 namespace el {
 
@@ -16,21 +16,22 @@ struct KeyIndex {
     std::vector<uint32_t> ends;
 
     explicit KeyIndex(const std::vector<ChainItem>& items) {
+        // Sort (key, end) pairs directly: contiguous and branch-light, several times faster
+        // than sorting end indices through their keys.
         const size_t n = items.size() * 2;
-        std::vector<uint32_t> order(n);
-        std::iota(order.begin(), order.end(), 0u);
-        auto key = [&](uint32_t e) { return items[e / 2].key[e % 2]; };
-        std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-            return key(a) < key(b) || (key(a) == key(b) && a < b);
-        });
+        std::vector<std::pair<uint64_t, uint32_t>> sorted(n);
+        for (size_t e = 0; e < n; ++e) sorted[e] = {items[e / 2].key[e % 2], uint32_t(e)};
+        std::sort(sorted.begin(), sorted.end());
         key_of_end.assign(n, 0);
+        ends.resize(n);
+        offsets.reserve(n + 1);
         offsets.push_back(0);
         for (size_t i = 0; i < n; ++i) {
-            if (i > 0 && key(order[i]) != key(order[i - 1])) offsets.push_back(uint32_t(i));
-            key_of_end[order[i]] = uint32_t(offsets.size() - 1);
+            if (i > 0 && sorted[i].first != sorted[i - 1].first) offsets.push_back(uint32_t(i));
+            key_of_end[sorted[i].second] = uint32_t(offsets.size() - 1);
+            ends[i] = sorted[i].second;
         }
         offsets.push_back(uint32_t(n));
-        ends = std::move(order);
     }
     uint32_t degree(uint32_t k) const { return offsets[k + 1] - offsets[k]; }
     // The other item end at a degree-2 key.
