@@ -96,7 +96,10 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         s = frame.Settings(samples=settings.samples, highlights=settings.highlights,
                            transparent=depsgraph.scene.render.film_transparent, lines=line_settings)
         keep = {}
+        reported = len(data.reports)
         pixels, stats = frame.render(data, camera, s, progress=self.update_progress, cancelled=self.test_break, keep=keep)
+        for line in data.reports[reported:]:  # what the passes skipped
+            self._report('WARNING', f"EdgeLight: {line}")
         last_render.update(keep, pixels=pixels, stats=stats, reports=list(data.reports), camera=camera, scene=data)
         self.update_stats("EdgeLight", f"{stats.objects} objects, {stats.edges_drawn} edges, {stats.lines_drawn} line segments")
         return pixels

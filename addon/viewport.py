@@ -284,8 +284,12 @@ def visible_edges(edges, matrix, camera, K):
     m = np.asarray(matrix, np.float64)
     p0 = edges.p0 @ m[:3, :3].T + m[:3, 3]
     p1 = edges.p1 @ m[:3, :3].T + m[:3, 3]
-    nm = np.linalg.inv(m[:3, :3]).T
-    n1, n2 = edges.n1 @ nm.T, edges.n2 @ nm.T
+    # Normals by the cofactor matrix (det x inverse transpose), as el_transform_normal does:
+    # defined for a singular transform too (an object scaled to zero).
+    c0, c1, c2 = m[:3, 0], m[:3, 1], m[:3, 2]
+    cof = np.stack([np.cross(c1, c2), np.cross(c2, c0), np.cross(c0, c1)], axis=1)
+    cof *= -1.0 if np.dot(c0, np.cross(c1, c2)) < 0.0 else 1.0
+    n1, n2 = edges.n1 @ cof.T, edges.n2 @ cof.T
     mid = 0.5 * (p0 + p1)
     to_eye = (np.asarray(camera.eye) - mid) if not camera.orthographic else np.repeat(-np.asarray(camera.view_dir)[None], len(mid), 0)
     front = (np.einsum("ij,ij->i", n1, to_eye) > 0) | (np.einsum("ij,ij->i", n2, to_eye) > 0)

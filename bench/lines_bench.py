@@ -226,7 +226,8 @@ def setup_scene(args):
 
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", 'SUN'))
     sun.data.energy = 3.0
-    sun.rotation_euler = (math.radians(40), math.radians(10), math.radians(30))
+    sun.rotation_mode = 'QUATERNION'  # light from above, a little left of the camera
+    sun.rotation_quaternion = (-Vector((0.4, -1.3, 1.2)).normalized()).to_track_quat('-Z', 'Y')
     scene.collection.objects.link(sun)
 
     mat = bpy.data.materials.new("Clay")

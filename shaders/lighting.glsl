@@ -34,10 +34,17 @@ float blinn_norm(float n)
 }
 
 /* Normals transform by the inverse transpose of the linear part; the cofactor matrix is that
- * times det, so three cross products and det's sign give the direction without an inverse. */
+ * times det, so three cross products and det's sign give the direction without an inverse.
+ * A singular transform (an object scaled to zero along an axis) still gives a finite normal:
+ * the flattened surface's own normal where the cofactor has one, else +Z. */
 vec3 el_transform_normal(mat4 m, vec3 n)
 {
   vec3 c0 = m[0].xyz, c1 = m[1].xyz, c2 = m[2].xyz;
   mat3 cof = mat3(cross(c1, c2), cross(c2, c0), cross(c0, c1));
-  return normalize(cof * n) * sign(dot(c0, cross(c1, c2)));
+  vec3 r = cof * n;
+  float len2 = dot(r, r);
+  if (!(len2 > 1e-30)) {
+    return vec3(0.0, 0.0, 1.0);
+  }
+  return r * (inversesqrt(len2) * (dot(c0, cross(c1, c2)) < 0.0 ? -1.0 : 1.0));
 }

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import gpu
 import numpy as np
 
-from .. import compat
+from .. import compat, native
 from . import batches, line_pass, shader_lib, table, toon
 from .. import lines as ink
 
@@ -211,11 +211,18 @@ def line_instances(scene, gpu_meshes, view_batches):
 
 
 def view_line_segments(scene, camera, line_settings, counters=None):
-    """Per instance, type -> LineSegments of the view-dependent types (native view calls)."""
+    """Per instance, type -> LineSegments of the view-dependent types (native view calls). An
+    instance the library refuses (a singular transform, say) gets none, and a report."""
     out, seen = [], {}
     for inst in scene.instances:
         index = seen[id(inst.mesh)] = seen.get(id(inst.mesh), -1) + 1
-        out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters))
+        try:
+            out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters))
+        except native.NativeError as e:
+            note = f"{inst.mesh.name}: no silhouettes or contours ({e.message})"
+            if note not in scene.reports:
+                scene.reports.append(note)
+            out.append({})
     return out
 
 

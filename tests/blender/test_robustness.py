@@ -52,6 +52,14 @@ class BadMeshes(unittest.TestCase):
         self.assertIn("Sliver: 1 zero-area faces", messages(rec))
         self.assertEqual(rec["stats"].objects, 2)
 
+    def test_singular_transform_with_view_dependent_lines(self):
+        bpy.context.scene.edgelight.use_lines = True
+        flat = add_object("Flat", [(3, 0, 0), (4, 0, 0), (4, 1, 0), (3, 1, 1)], [], [(0, 1, 2), (0, 2, 3)])
+        flat.scale = (1.0, 0.0, 1.0)  # no inverse: the library refuses the object-space view
+        rec = self.render_ok()
+        self.assertIn("Flat: no silhouettes or contours (el_view_update:", messages(rec))
+        self.assertGreater(rec["stats"].lines_drawn, 0, "the cube's lines are still drawn")
+
     def test_no_material(self):
         bpy.data.objects["Cube"].data.materials.clear()
         rec = self.render_ok()
@@ -110,8 +118,8 @@ def fingerprint():
 
 class UserDataUnchanged(unittest.TestCase):
     def test_render_changes_no_mesh_or_material(self):
-        for name in ("cube", "fandisk", "prop"):
-            helpers.open_sample(name)
+        for name in ("cube", "fandisk", "prop", "toon"):
+            helpers.open_sample(name, use_lines=True)
             before = fingerprint()
             helpers.render(resolution=(160, 120))
             self.assertEqual(before, fingerprint(), name)
@@ -136,6 +144,36 @@ class SettingsSurviveSaveAndReload(unittest.TestCase):
         self.assertTrue(s.use_custom_shininess)
         self.assertEqual(s.shininess, 123.0)
         self.assertEqual(bpy.context.scene.edgelight.samples, 5)
+        self.assertEqual(bpy.context.scene.render.engine, "EDGELIGHT")
+
+    def test_lines_and_toon_round_trip(self):
+        import tempfile
+        helpers.open_sample("cube")
+        sc = bpy.context.scene.edgelight
+        sc.use_lines, sc.crease_angle, sc.marks, sc.hidden_lines, sc.debug = True, 0.9, {'SEAM'}, 'DIMMED', {'WIRE'}
+        sc.line_contour.enabled, sc.line_contour.width, sc.line_contour.unit, sc.line_contour.taper = True, 0.02, 'SCENE', 0.25
+        sc.line_silhouette.color = (0.1, 0.2, 0.3)
+        m = bpy.data.materials["Cube"].edgelight
+        m.shading, m.ramp_interpolation, m.xtoon_axis, m.xtoon_far = 'RAMP', 'LINEAR', 'ORIENTATION', 33.0
+        for pos in (0.0, 0.4, 0.8):
+            stop = m.ramp.add()
+            stop.position, stop.color = pos, (pos, 0.5, 1.0 - pos)
+        path = os.path.join(tempfile.mkdtemp(), "lines.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        sc = bpy.context.scene.edgelight
+        self.assertTrue(sc.use_lines)
+        self.assertAlmostEqual(sc.crease_angle, 0.9, places=6)
+        self.assertEqual((set(sc.marks), sc.hidden_lines, set(sc.debug)), ({'SEAM'}, 'DIMMED', {'WIRE'}))
+        c = sc.line_contour
+        self.assertEqual((c.enabled, c.unit), (True, 'SCENE'))
+        self.assertAlmostEqual(c.width, 0.02, places=6)
+        self.assertAlmostEqual(c.taper, 0.25, places=6)
+        self.assertEqual(tuple(round(v, 6) for v in sc.line_silhouette.color), (0.1, 0.2, 0.3))
+        m = bpy.data.materials["Cube"].edgelight
+        self.assertEqual((m.shading, m.ramp_interpolation, m.xtoon_axis), ('RAMP', 'LINEAR', 'ORIENTATION'))
+        self.assertEqual([round(st.position, 6) for st in m.ramp], [0.0, 0.4, 0.8])
+        self.assertAlmostEqual(m.xtoon_far, 33.0, places=5)
         self.assertEqual(bpy.context.scene.render.engine, "EDGELIGHT")
 
 
