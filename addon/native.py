@@ -38,6 +38,7 @@ CHAIN_END_FREE = 1 << 2
 
 TABLE_PAPER = 0
 TABLE_WARPED = 1
+TABLE_BICUBIC = 2
 
 _u32p = ctypes.POINTER(ctypes.c_uint32)
 _f32p = ctypes.POINTER(ctypes.c_float)
@@ -377,8 +378,9 @@ class HighlightTable(_Handle):
     """The F(phi, m) table (el_highlight_table), ready to upload as an R32F texture."""
     _destroy = "el_highlight_table_destroy"
 
-    # Recommended default (docs/highlight_math.md): 256 x 256, exponents 1..10001, max error 2.2e-5.
-    def __init__(self, layout=TABLE_WARPED, phi_count=256, m_count=256, m_max=10001.0, lib=None):
+    # Recommended default, EL_TABLE_DEFAULT_DESC (docs/highlight_math.md, "Table study"): bicubic
+    # 96 x 128, exponents 1..10001, max error 1.1e-6.
+    def __init__(self, layout=TABLE_BICUBIC, phi_count=96, m_count=128, m_max=10001.0, lib=None):
         lib = lib or load()
         d = TableDesc(layout, phi_count, m_count, m_max)
         handle = _P()

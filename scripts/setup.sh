@@ -10,6 +10,7 @@ packages=(
   libcgal-demo          # classic meshes (cow, fandisk, bunny, armadillo) in data.tar.gz
   blender python3-numpy # Debian's Blender 3.4 (system Python 3.11) for the add-on
   xvfb                  # the UI under xvfb-run for viewport tests
+  clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the C API fuzz test (scripts/fuzz.sh)
 )
 
 missing=()

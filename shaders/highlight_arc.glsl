@@ -91,7 +91,23 @@ float el_cos_pow(float t, float n)
   return exp(n * el_log_cos(t));
 }
 
-/* Table row for exponent m: (row0, weight of row1, texel per radian, output scale). */
+/* Weights of the cubic Lagrange polynomial through nodes 0, 1, 2, 3 at s in [0, 3]. */
+vec4 el_lagrange4(float s)
+{
+  float a = s, b = s - 1.0, c = s - 2.0, d = s - 3.0;
+  return vec4(-(b * c * d) * (1.0 / 6.0), (a * c * d) * 0.5, -(a * b * d) * 0.5, (a * b * c) * (1.0 / 6.0));
+}
+
+/* EL_TABLE_BICUBIC's phi_end(m) = ((2/pi)^6 + m^3/c^6)^(-1/6): smooth in ln m. */
+float el_bicubic_phi_end(float m, float c)
+{
+  float k = 0.405284735; /* (2/pi)^2 */
+  float r = m / (c * c);
+  return exp(log(k * k * k + r * r * r) * (-1.0 / 6.0));
+}
+
+/* Table row for exponent m: (first row of the stencil, y minus it, texel per radian, output
+ * scale). table_params.x is the layout: 0 paper, 1 warped, 2 bicubic. */
 vec4 el_table_row(float m)
 {
   ivec2 size = textureSize(cos_power_table, 0);
@@ -104,19 +120,42 @@ vec4 el_table_row(float m)
   }
   else {
     y = log(m) / log(table_params.y) * last_row;
-    float phi_end = min(1.57079632679, table_params.z / sqrt(m));
+    float phi_end = table_params.x > 1.5 ? min(1.57079632679, el_bicubic_phi_end(m, table_params.z)) :
+                                           min(1.57079632679, table_params.z / sqrt(m));
     phi_to_texel = float(size.x - 1) / phi_end;
     out_scale = 1.0 / sqrt(m);
   }
   y = clamp(y, 0.0, last_row);
-  float j = min(floor(y), last_row - 1.0);
+  float j = table_params.x > 1.5 ? clamp(floor(y) - 1.0, 0.0, last_row - 3.0) : min(floor(y), last_row - 1.0);
   return vec4(j, y - j, phi_to_texel, out_scale);
+}
+
+/* EL_TABLE_BICUBIC: 4 x 4 texels, cubic Lagrange in both directions. */
+float el_table_lookup_bicubic(vec4 row, float x, float last)
+{
+  float i = clamp(floor(x) - 1.0, 0.0, last - 3.0);
+  vec4 wx = el_lagrange4(x - i);
+  vec4 wy = el_lagrange4(row.y);
+  int k = int(i), j = int(row.x);
+  float v = 0.0;
+  for (int r = 0; r < 4; ++r) {
+    float p0 = texelFetch(cos_power_table, ivec2(k, j + r), 0).r;
+    float p1 = texelFetch(cos_power_table, ivec2(k + 1, j + r), 0).r;
+    float p2 = texelFetch(cos_power_table, ivec2(k + 2, j + r), 0).r;
+    float p3 = texelFetch(cos_power_table, ivec2(k + 3, j + r), 0).r;
+    float s = wx.x * p0 + wx.y * p1 + wx.z * p2 + wx.w * p3;
+    v += wy[r] * s;
+  }
+  return v;
 }
 
 float el_table_lookup(vec4 row, float phi)
 {
   float last = float(textureSize(cos_power_table, 0).x - 1);
   float x = min(abs(phi) * row.z, last);
+  if (table_params.x > 1.5) {
+    return sign(phi) * el_table_lookup_bicubic(row, x, last) * row.w;
+  }
   float i = min(floor(x), last - 1.0);
   float fx = x - i;
   int k = int(i), j = int(row.x);

@@ -23,15 +23,16 @@ void BM_HighlightTableCreate(benchmark::State& state) {
         benchmark::DoNotOptimize(t);
         el_highlight_table_destroy(t);
     }
-    state.SetLabel(desc.layout == EL_TABLE_PAPER ? "paper" : "warped (default)");
+    state.SetLabel(desc.layout == EL_TABLE_PAPER ? "paper" : desc.layout == EL_TABLE_WARPED ? "warped" : "bicubic (default)");
 }
 BENCHMARK(BM_HighlightTableCreate)
+    ->Args({EL_TABLE_BICUBIC, 96, 128})
     ->Args({EL_TABLE_WARPED, 256, 256})
     ->Args({EL_TABLE_PAPER, 1024, 128})
     ->Unit(benchmark::kMillisecond);
 
 void BM_HighlightTableLookup(benchmark::State& state) {
-    el_highlight_table* t = make_table({EL_TABLE_WARPED, 256, 256, 10001.0f});
+    el_highlight_table* t = make_table(EL_TABLE_DEFAULT_DESC);
     std::mt19937 rng(1);
     std::uniform_real_distribution<float> phi(-1.5f, 1.5f), logm(0.0f, 9.2f);
     std::vector<std::pair<float, float>> q(1024);
@@ -74,7 +75,7 @@ std::vector<el_highlight_input> random_inputs(size_t count) {
 }
 
 void BM_HighlightEvalBatch(benchmark::State& state) {
-    el_highlight_table* t = make_table({EL_TABLE_WARPED, 256, 256, 10001.0f});
+    el_highlight_table* t = make_table(EL_TABLE_DEFAULT_DESC);
     const std::vector<el_highlight_input> in = random_inputs(4096);
     std::vector<el_highlight_result> out(in.size());
     for (auto _ : state) {

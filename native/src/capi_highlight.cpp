@@ -142,20 +142,26 @@ EL_API el_status el_highlight_table_create(const el_table_desc* desc, el_highlig
         el::require(out, "out");
         *out = nullptr;
         el::require(desc, "desc");
-        if (desc->layout != EL_TABLE_PAPER && desc->layout != EL_TABLE_WARPED)
+        if (desc->layout != EL_TABLE_PAPER && desc->layout != EL_TABLE_WARPED &&
+            desc->layout != EL_TABLE_BICUBIC)
             bad("desc->layout = " + std::to_string(desc->layout) +
-                " is neither EL_TABLE_PAPER (0) nor EL_TABLE_WARPED (1)");
+                " is none of EL_TABLE_PAPER (0), EL_TABLE_WARPED (1), EL_TABLE_BICUBIC (2)");
         if (desc->phi_count < 2)
             el::fail(EL_ERR_INVALID_COUNT, "desc->phi_count = " + std::to_string(desc->phi_count) + " is below 2");
         if (desc->m_count < 2)
             el::fail(EL_ERR_INVALID_COUNT, "desc->m_count = " + std::to_string(desc->m_count) + " is below 2");
+        if (desc->layout == EL_TABLE_BICUBIC &&
+            (desc->phi_count < el::kBicubicMinCount || desc->m_count < el::kBicubicMinCount))
+            el::fail(EL_ERR_INVALID_COUNT, "desc->phi_count = " + std::to_string(desc->phi_count) +
+                                               ", desc->m_count = " + std::to_string(desc->m_count) +
+                                               ": EL_TABLE_BICUBIC needs both >= 4 (its 4-point stencil)");
         const uint64_t floats = uint64_t(desc->phi_count) * desc->m_count;
         if (floats > el::kMaxTableFloats)
             el::fail(EL_ERR_OVERFLOW, "desc->phi_count * desc->m_count = " + std::to_string(floats) +
                                           " floats: the byte size would overflow int32 (limit " +
                                           std::to_string(el::kMaxTableFloats) + " floats)");
         el::require_finite(desc->m_max, "desc->m_max");
-        if (desc->layout == EL_TABLE_WARPED &&
+        if (desc->layout != EL_TABLE_PAPER &&
             !(desc->m_max > 1.0f && desc->m_max <= el::kMaxTableExponent))
             bad("desc->m_max = " + num(desc->m_max) + " is outside (1, " + num(el::kMaxTableExponent) + "]");
         auto* t = new el_highlight_table{

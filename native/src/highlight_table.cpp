@@ -67,8 +67,23 @@ float warp_c_for(uint32_t m_count, float m_max) {
     return float(kHalfPi * std::sqrt(double(m_max)));  // phi_end = pi/2 on every row
 }
 
+float bicubic_phi_end(float m, float c) {
+    const float k = 0.405284735f;  // (2/pi)^2
+    const float r = m / (c * c);
+    return std::exp(std::log(k * k * k + r * r * r) * (-1.0f / 6.0f));  // GLSL has no cbrt
+}
+
+namespace {
+
+double bicubic_phi_end_exact(double m, double c) {
+    const double k = 1.0 / (kHalfPi * kHalfPi), r = m / (c * c);
+    return 1.0 / std::sqrt(std::cbrt(k * k * k + r * r * r));
+}
+
+}  // namespace
+
 HighlightTable build_highlight_table(int32_t layout, uint32_t phi_count, uint32_t m_count,
-                                     float m_max) {
+                                     float m_max, double c_override) {
     HighlightTable t;
     t.layout = layout;
     t.phi_count = phi_count;
@@ -81,8 +96,18 @@ HighlightTable build_highlight_table(int32_t layout, uint32_t phi_count, uint32_
         return t;
     }
     t.m_max = m_max;
-    t.warp_c = warp_c_for(m_count, m_max);
     t.log_m_max = std::log(m_max);
+    if (layout == EL_TABLE_BICUBIC) {
+        t.warp_c = float(c_override > 0.0 ? c_override : kBicubicC);
+        for (uint32_t j = 0; j < m_count; ++j) {
+            const double m = row_exponent(j, m_count, m_max);
+            // phi_end from the float c the shader gets, so that both place the texels alike.
+            const double phi_end = std::min(kHalfPi, bicubic_phi_end_exact(m, double(t.warp_c)));
+            fill_row(&t.data[size_t(j) * phi_count], phi_count, m, phi_end, std::sqrt(m));
+        }
+        return t;
+    }
+    t.warp_c = warp_c_for(m_count, m_max);
     for (uint32_t j = 0; j < m_count; ++j) {
         const double m = row_exponent(j, m_count, m_max);
         const double phi_end = std::min(kHalfPi, double(t.warp_c) / std::sqrt(m));
@@ -101,15 +126,26 @@ TableRow table_row(const HighlightTable& t, float m) {
         r.out_scale = 1.0f;
     } else {
         y = std::log(m) / t.log_m_max * last_row;
-        const float phi_end = std::min(1.57079632679f, t.warp_c / std::sqrt(m));
+        const float phi_end = t.layout == EL_TABLE_BICUBIC
+                                  ? std::min(1.57079632679f, bicubic_phi_end(m, t.warp_c))
+                                  : std::min(1.57079632679f, t.warp_c / std::sqrt(m));
         r.phi_to_texel = float(t.phi_count - 1) / phi_end;
         r.out_scale = 1.0f / std::sqrt(m);
     }
     y = std::clamp(y, 0.0f, last_row);
-    const float j = std::min(std::floor(y), last_row - 1.0f);
-    r.row_weight = y - j;
+    float j;
+    if (t.layout == EL_TABLE_BICUBIC) {
+        // Rows j0 .. j0+3 around y (shifted inwards at the ends).
+        j = std::clamp(std::floor(y) - 1.0f, 0.0f, last_row - 3.0f);
+        r.row_frac = y - j;
+        lagrange4(r.row_frac, r.row_w);
+    } else {
+        j = std::min(std::floor(y), last_row - 1.0f);
+        r.row_frac = y - j;
+        r.row_w[0] = 1.0f - r.row_frac;
+        r.row_w[1] = r.row_frac;
+    }
     r.row0 = t.data.data() + size_t(j) * t.phi_count;
-    r.row1 = r.row0 + t.phi_count;
     return r;
 }
 
@@ -117,12 +153,26 @@ float table_lookup(const HighlightTable& t, const TableRow& r, float phi) {
     const float last = float(t.phi_count - 1);
     // Beyond phi_end the warped rows are constant, so clamping the texel coordinate is exact.
     const float x = std::min(std::fabs(phi) * r.phi_to_texel, last);
+    if (t.layout == EL_TABLE_BICUBIC) {
+        const float i = std::clamp(std::floor(x) - 1.0f, 0.0f, last - 3.0f);
+        float wx[4];
+        lagrange4(x - i, wx);
+        const size_t k = size_t(i);
+        float v = 0.0f;
+        for (int row = 0; row < 4; ++row) {
+            const float* p = r.row0 + size_t(row) * t.phi_count + k;
+            const float s = wx[0] * p[0] + wx[1] * p[1] + wx[2] * p[2] + wx[3] * p[3];
+            v += r.row_w[row] * s;
+        }
+        return std::copysign(v * r.out_scale, phi);
+    }
     const float i = std::min(std::floor(x), last - 1.0f);
     const float fx = x - i;
     const size_t k = size_t(i);
+    const float* row1 = r.row0 + t.phi_count;
     const float v0 = r.row0[k] + fx * (r.row0[k + 1] - r.row0[k]);
-    const float v1 = r.row1[k] + fx * (r.row1[k + 1] - r.row1[k]);
-    const float v = v0 + r.row_weight * (v1 - v0);
+    const float v1 = row1[k] + fx * (row1[k + 1] - row1[k]);
+    const float v = v0 + r.row_frac * (v1 - v0);
     return std::copysign(v * r.out_scale, phi);
 }
 

@@ -118,7 +118,8 @@ TEST(HighlightCosPower, SinTermAgainstNumericIntegration) {
 // The same closed forms read back through a table (float32 storage and interpolation).
 TEST(HighlightCosPower, ClosedFormsThroughTables) {
     for (el_table_desc desc : {el_table_desc{EL_TABLE_PAPER, 1024, 128, 0.0f},
-                               el_table_desc{EL_TABLE_WARPED, 256, 256, 10001.0f}}) {
+                               el_table_desc{EL_TABLE_WARPED, 256, 256, 10001.0f},
+                               el_table_desc EL_TABLE_DEFAULT_DESC}) {
         el_highlight_table* t = nullptr;
         ASSERT_EQ(el_highlight_table_create(&desc, &t), EL_OK) << el_last_error();
         double worst1 = 0, worst2 = 0;

@@ -58,7 +58,7 @@ TEST(HighlightErrors, TableCreate) {
         EXPECT_EQ(t, nullptr);
         return s;
     };
-    EXPECT_FAILS(create({2, 64, 16, 100.0f}), EL_ERR_INVALID_ARGUMENT, "layout");
+    EXPECT_FAILS(create({3, 64, 16, 100.0f}), EL_ERR_INVALID_ARGUMENT, "layout");
     EXPECT_FAILS(create({-1, 64, 16, 100.0f}), EL_ERR_INVALID_ARGUMENT, "layout");
     EXPECT_FAILS(create({EL_TABLE_WARPED, 0, 16, 100.0f}), EL_ERR_INVALID_COUNT, "phi_count");
     EXPECT_FAILS(create({EL_TABLE_WARPED, 1, 16, 100.0f}), EL_ERR_INVALID_COUNT, "phi_count");

@@ -286,7 +286,7 @@ void run(const el_highlight_table* table, uint64_t seed, long count, Stats& st) 
 }
 
 TEST(HighlightStress, EvalAgainstReference) {
-    el_table_desc desc{EL_TABLE_WARPED, 256, 256, 10001.0f};
+    el_table_desc desc = EL_TABLE_DEFAULT_DESC;  // what the add-on uploads
     el_highlight_table* table = nullptr;
     ASSERT_EQ(el_highlight_table_create(&desc, &table), EL_OK) << el_last_error();
 
