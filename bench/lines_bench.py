@@ -314,8 +314,20 @@ def set_edgelight(scene, lines):
     if edgelight_lines_available(scene):
         el.use_lines = lines
         el.crease_angle = math.radians(CREASE_DEG)
+        if hasattr(el, "hidden_lines"):
+            el.hidden_lines = 'OFF'  # visible lines only, like the Freestyle line set
         for k in ("line_silhouette", "line_crease", "line_border"):
-            getattr(el, k).enabled = True
+            style = getattr(el, k)
+            style.enabled = True
+            if hasattr(style, "width"):
+                style.width = LINE_PX
+            if hasattr(style, "unit"):
+                style.unit = 'PIXELS'
+            if hasattr(style, "taper"):
+                style.taper = 0.0
+        for k in ("line_contour", "line_marked", "line_material"):
+            if hasattr(el, k):
+                getattr(el, k).enabled = False
 
 
 def set_eevee(scene, freestyle):

@@ -93,6 +93,13 @@ void fuzz_view(FuzzedDataProvider& p, const el_mesh* mesh, const el_mesh_info& i
         el_view_get_contours(view, pts.data(), p.ConsumeBool() ? tris.data() : nullptr, ccap, &count);
         el_view_stats stats{};
         el_view_get_stats(view, &stats);
+        // Chains of the contours: exact or short capacities, or NULL arrays.
+        const uint32_t lcap = capacity_for(p, stats.contour_segments);
+        const uint32_t kcap = capacity_for(p, stats.contour_segments);
+        std::vector<el_chain_link> links(lcap + 1);
+        std::vector<el_chain> chains(kcap + 1);
+        el_view_chain_contours(view, p.ConsumeBool() ? links.data() : nullptr, lcap,
+                               p.ConsumeBool() ? chains.data() : nullptr, kcap, &count);
     }
     el_view_update(view, nullptr, EL_VIEW_SILHOUETTES, nullptr);
     el_view_get_stats(view, nullptr);
@@ -177,6 +184,16 @@ void fuzz_mesh(FuzzedDataProvider& p) {
     const uint32_t all_of = p.ConsumeIntegral<uint32_t>(), any_of = p.ConsumeIntegral<uint32_t>();
     el_mesh_select_edges(mesh, all_of, any_of, sel.data(), scap, &count);
     el_mesh_select_edges(mesh, all_of, any_of, nullptr, 0, &count);
+    // Chains of arbitrary edge lists: repeats and out-of-range indices must be refused.
+    const uint32_t n_chain = p.ConsumeIntegralInRange<uint32_t>(0, info.edge_count + 2);
+    std::vector<uint32_t> chain_edges(n_chain + 1);
+    for (uint32_t i = 0; i < n_chain; ++i)
+        chain_edges[i] = p.ConsumeBool() ? i : index_for(p, info.edge_count);
+    std::vector<el_chain_link> links(n_chain + 1);
+    const uint32_t kcap = capacity_for(p, n_chain);
+    std::vector<el_chain> chains(kcap + 1);
+    el_mesh_chain_edges(mesh, p.ConsumeBool() ? chain_edges.data() : nullptr, n_chain, links.data(),
+                        chains.data(), kcap, &count);
     fuzz_view(p, mesh, info);
     el_mesh_destroy(mesh);
 }
