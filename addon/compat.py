@@ -75,6 +75,18 @@ def triangle_material_index(mesh):
     return per_poly[poly]
 
 
+# 5.0 always renders worlds and materials with their node trees; `use_nodes` is deprecated there
+# (a DeprecationWarning on every read) and a file's node-less world is versioned into a tree.
+_ALWAYS_NODES = bpy.app.version >= (5, 0)
+
+
+def uses_nodes(id_block):
+    """Whether a World or Material renders from its node tree."""
+    if id_block.node_tree is None:
+        return False
+    return _ALWAYS_NODES or id_block.use_nodes
+
+
 def write_pass(render_pass, pixels):
     """pixels: (h * w, 4) float32. Newer versions take a flat array, 3.4 a 2-D one."""
     try:

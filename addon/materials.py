@@ -2,6 +2,8 @@
 from dataclasses import dataclass
 import math
 
+from . import compat
+
 DEFAULT_COLOR = (0.8, 0.8, 0.8)
 
 
@@ -40,7 +42,7 @@ def _float(node, default, *names):
 
 
 def _principled(material):
-    if not (material.use_nodes and material.node_tree):
+    if not compat.uses_nodes(material):
         return None
     for node in material.node_tree.nodes:
         if node.type == 'BSDF_PRINCIPLED':
