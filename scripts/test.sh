@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# The README's test command: set up, build, run every test.
+# The README's test command: set up, build, run every test (the add-on's on every Blender version).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
 "$root/scripts/setup.sh"
+BUILD_DIR="$build" "$root/scripts/setup_bpy.sh"  # Blender 4.2 LTS, 4.5 LTS, 5.x for the version matrix
 BUILD_DIR="$build" "$root/scripts/build.sh"
 cd "$build"
 ctest --output-on-failure -j"$(nproc)"

@@ -62,7 +62,7 @@ class Lights(unittest.TestCase):
         ob.location = (0.0, -6.0, 0.0)
         ob.rotation_euler = tuple(math.radians(a) for a in aim)  # default: along +y, at the front face
         bpy.context.scene.collection.objects.link(ob)
-        bpy.context.scene.world.color = (0.0, 0.0, 0.0)
+        helpers.set_world_color(bpy.context.scene, (0.0, 0.0, 0.0))
         rec = helpers.render(resolution=(160, 120))
         xy = helpers.project(rec, [(0.0, -1.0, 0.0)])[0]  # centre of the front face
         return helpers.luminance(helpers.sample(rec["surface"], xy[None])[0, :3])
