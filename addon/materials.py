@@ -74,5 +74,5 @@ def shading_of(material):
     albedo = tuple(b * (1.0 - metallic) for b in base)
     s = material.edgelight
     n = s.shininess if s.use_custom_shininess else shininess_from_roughness(roughness)
-    return Shading(albedo, alpha, spec, float(n), bool(s.enabled), float(s.K), float(s.radius),
+    return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), float(s.K), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle))
