@@ -11,9 +11,10 @@ version="${1:?usage: blender_tests.sh VERSION [-- -k PATTERN]}"
 shift
 [ "${1:-}" = "--" ] && shift
 runner="$root/tests/blender/runner.py"
+user="$build/blender_user/${EDGELIGHT_TEST_TAG:-$version}"  # per ctest entry: they run in parallel
 
 if [ "$version" = "3.4" ]; then
-  export BLENDER_USER_SCRIPTS="$(BUILD_DIR="$build" "$root/scripts/install_addon.sh" "$build/blender_user/3.4/scripts")"
+  export BLENDER_USER_SCRIPTS="$(BUILD_DIR="$build" "$root/scripts/install_addon.sh" "$user/scripts")"
   export EDGELIGHT_MODULE=edgelight EDGELIGHT_EXPECT_BLENDER=3.4
   export EDGELIGHT_PACKAGE="$(ls -t "$build"/edgelight-*-linux-x64.zip | head -1)"
   exec blender -b --factory-startup --python-exit-code 1 --addons edgelight --python "$runner" -- "$@"
@@ -26,7 +27,7 @@ if [ ! -x "$python" ]; then
 fi
 zip="$(ls -t "$build"/edgelight-*-linux-x64.zip | head -1)"
 unset BLENDER_USER_SCRIPTS
-export BLENDER_USER_RESOURCES="$build/blender_user/$version"
+export BLENDER_USER_RESOURCES="$user"
 rm -rf "$BLENDER_USER_RESOURCES"
 mkdir -p "$BLENDER_USER_RESOURCES"
 boot="$root/tests/blender/bpy_module.py"

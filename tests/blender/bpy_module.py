@@ -4,6 +4,7 @@
                                                   #   -r user_default --enable PACKAGE.zip
     python bpy_module.py run SCRIPT [-- ARGS]     # = blender -b --addons $EDGELIGHT_MODULE
                                                   #   --python SCRIPT -- ARGS
+    python bpy_module.py run-bare SCRIPT [-- ARGS]  # the same without enabling the add-on
     python bpy_module.py validate PACKAGE.zip     # = blender --command extension validate
 
 The module has no `--command`: install and validate call the handler that Blender's own
@@ -22,14 +23,22 @@ def extension_command(args):
     return bl_extension_cli.cli_extension_handler(args)
 
 
-def run(script, args):
+def run(script, args, enable=True):
     import addon_utils
     module = os.environ.get("EDGELIGHT_MODULE", "edgelight")
-    if addon_utils.enable(module, default_set=True) is None:
+    if enable and addon_utils.enable(module, default_set=True) is None:
         print(f"bpy_module: cannot enable add-on {module}", file=sys.stderr)
-        sys.exit(1)
+        return 1
     sys.argv = [sys.executable, "--python", script, "--", *args]
-    runpy.run_path(script, run_name="__main__")
+    try:
+        runpy.run_path(script, run_name="__main__")
+    except SystemExit as e:
+        return e.code if isinstance(e.code, int) else (0 if e.code is None else 1)
+    except Exception:  # like blender --python-exit-code 1
+        import traceback
+        traceback.print_exc()
+        return 1
+    return 0
 
 
 def main(argv):
@@ -37,10 +46,9 @@ def main(argv):
         return extension_command(["install-file", "-r", "user_default", "--enable", os.path.abspath(argv[1])])
     if len(argv) >= 2 and argv[0] == "validate":
         return extension_command(["validate", os.path.abspath(argv[1])])
-    if len(argv) >= 2 and argv[0] == "run":
+    if len(argv) >= 2 and argv[0] in ("run", "run-bare"):
         rest = argv[2:]
-        run(os.path.abspath(argv[1]), rest[1:] if rest[:1] == ["--"] else rest)
-        return 0
+        return run(os.path.abspath(argv[1]), rest[1:] if rest[:1] == ["--"] else rest, enable=argv[0] == "run")
     print(__doc__, file=sys.stderr)
     return 2
 

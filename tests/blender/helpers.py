@@ -26,13 +26,15 @@ def is_module_build():
     return not bpy.app.binary_path
 
 
-def blender_command(script, *args):
-    """The command that runs `script` in a new headless Blender of this version with the add-on
-    enabled, as `blender -b --addons MODULE --python script -- args` does."""
+def blender_command(script, *args, addon=True):
+    """The command that runs `script` in a new headless Blender of this version (with the add-on
+    enabled unless addon=False), as `blender -b --addons MODULE --python script -- args` does."""
     if is_module_build():
-        return [sys.executable, os.path.join(HERE, "bpy_module.py"), "run", script, "--", *args]
-    return [bpy.app.binary_path, "-b", "--factory-startup", "--python-exit-code", "1",
-            "--addons", MODULE, "--python", script, "--", *args]
+        return [sys.executable, os.path.join(HERE, "bpy_module.py"), "run" if addon else "run-bare",
+                script, "--", *args]
+    enable = ["--addons", MODULE] if addon else []
+    return [bpy.app.binary_path, "-b", "--factory-startup", "--python-exit-code", "1", *enable,
+            "--python", script, "--", *args]
 
 
 def needs_gpu():

@@ -30,8 +30,10 @@ def probe_gpu():
     for line in run.stdout.splitlines():
         if line.startswith("EDGELIGHT_GPU_PROBE "):
             _, status, text = line.split(" ", 2)
-            print(f"blender {bpy.app.version_string}: GPU probe: {status}: {text}")
-            return None if status == "ok" else text
+            if status == "ok":
+                print(f"blender {bpy.app.version_string}: GPU: {text}")
+                return None
+            return text
     tail = (run.stderr or run.stdout).strip().splitlines()[-1:] or ["no output"]
     return f"the GPU probe process exited with code {run.returncode}: {tail[0]}"
 

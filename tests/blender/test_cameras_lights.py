@@ -29,8 +29,7 @@ class Cameras(unittest.TestCase):
         helpers.open_sample("cube")
         s = bpy.context.scene
         s.render.resolution_x, s.render.resolution_y, s.render.resolution_percentage = 400, 300, 50
-        bpy.ops.render.render()
-        self.assertEqual(helpers.addon().engine.last_render["pixels"].shape, (150, 200, 4))
+        self.assertEqual(helpers.render()["pixels"].shape, (150, 200, 4))
 
 
 class Film(unittest.TestCase):
