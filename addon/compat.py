@@ -97,15 +97,31 @@ def write_pass(render_pass, pixels):
 
 
 
+def eevee_engine_id():
+    """EEVEE's engine id: BLENDER_EEVEE in 3.4 and 5.x, BLENDER_EEVEE_NEXT in 4.2 to 4.5."""
+    items = bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items
+    return next(i.identifier for i in items if i.identifier.startswith("BLENDER_EEVEE"))
+
+
+# EEVEE panels for data EdgeLight reads the way EEVEE does: the world's Background node (the
+# only world colour 5.0 renders).
+_EEVEE_PANELS = ("EEVEE_WORLD_PT_surface",)
+
+
 def compat_panels():
     """Built-in panels that list Blender's own engines and should show for EdgeLight too."""
     panels = []
+    eevee = eevee_engine_id()
     for name in dir(bpy.types):
         cls = getattr(bpy.types, name)
         engines = getattr(cls, "COMPAT_ENGINES", None)
-        if isinstance(engines, set) and ("BLENDER_RENDER" in engines or "BLENDER_WORKBENCH" in engines):
+        if not isinstance(engines, set):
+            continue
+        if "BLENDER_RENDER" in engines or "BLENDER_WORKBENCH" in engines:
             if name.startswith(("MATERIAL_PT_", "EEVEE_MATERIAL_PT_")):
                 continue  # our own material panel replaces these
+            panels.append(cls)
+        elif name in _EEVEE_PANELS and eevee in engines:
             panels.append(cls)
     return panels
 

@@ -18,6 +18,17 @@ class EngineRegisters(unittest.TestCase):
         self.assertTrue(hasattr(bpy.types.Scene, "edgelight"))
 
 
+class Panels(unittest.TestCase):
+    def test_blender_panels_for_lights_cameras_output_and_world_show_for_edgelight(self):
+        compat = helpers.addon().compat
+        engines = [i.identifier for i in bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items]
+        self.assertIn(compat.eevee_engine_id(), engines)
+        for name in ("DATA_PT_light", "DATA_PT_lens", "RENDER_PT_format", "EEVEE_WORLD_PT_surface"):
+            self.assertIn("EDGELIGHT", getattr(bpy.types, name).COMPAT_ENGINES, name)
+        self.assertNotIn("EDGELIGHT", bpy.types.EEVEE_MATERIAL_PT_surface.COMPAT_ENGINES,
+                         "EdgeLight's own material panel replaces it")
+
+
 class RendersEverySample(unittest.TestCase):
     def check(self, name, min_edges):
         helpers.open_sample(name)
