@@ -21,8 +21,8 @@ if [ "$version" = "3.4" ]; then
 fi
 
 python="$build/bpy/venv-$version/bin/python"
-if [ ! -x "$python" ]; then
-  echo "blender $version: 0 passed, 1 failed: no bpy venv at $python (run scripts/setup_bpy.sh)"
+if [ ! -f "$build/bpy/venv-$version/edgelight-stamp" ]; then  # stamped once bpy installed
+  echo "blender $version: 0 passed, 1 failed: no bpy venv at $build/bpy/venv-$version (run scripts/setup_bpy.sh)"
   exit 1
 fi
 zip="$(ls -t "$build"/edgelight-*-linux-x64.zip | head -1)"
