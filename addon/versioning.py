@@ -46,7 +46,7 @@ def upgrade(group, kind):
         fn = STEPS[kind].get(step)
         if fn:
             fn(group)
-    if layout != SETTINGS_VERSION:
+    if layout < SETTINGS_VERSION:  # a newer add-on's stamp is kept: its data is not ours to relabel
         group.settings_version = SETTINGS_VERSION
     return layout
 
@@ -72,7 +72,7 @@ def upgrade_all():
 def stamp_all():
     """Records the current layout in every group that stores something, so the next load knows."""
     for _kind, group in _groups():
-        if group.keys() and group.get(STAMP) != SETTINGS_VERSION:
+        if group.keys() and group.get(STAMP, 0) < SETTINGS_VERSION:
             group.settings_version = SETTINGS_VERSION
 
 
