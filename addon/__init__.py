@@ -10,11 +10,12 @@ bl_info = {
     "category": "Render",
 }
 
-from . import engine, properties, ui  # noqa: E402
+from . import engine, properties, ui, versioning  # noqa: E402
 
 
 def register():
     properties.register()
+    versioning.register()
     engine.register()
     ui.register()
 
@@ -22,4 +23,5 @@ def register():
 def unregister():
     ui.unregister()
     engine.unregister()
+    versioning.unregister()
     properties.unregister()

@@ -75,6 +75,18 @@ def triangle_material_index(mesh):
     return per_poly[poly]
 
 
+# 5.0 always renders worlds and materials with their node trees; `use_nodes` is deprecated there
+# (a DeprecationWarning on every read) and a file's node-less world is versioned into a tree.
+_ALWAYS_NODES = bpy.app.version >= (5, 0)
+
+
+def uses_nodes(id_block):
+    """Whether a World or Material renders from its node tree."""
+    if id_block.node_tree is None:
+        return False
+    return _ALWAYS_NODES or id_block.use_nodes
+
+
 def write_pass(render_pass, pixels):
     """pixels: (h * w, 4) float32. Newer versions take a flat array, 3.4 a 2-D one."""
     try:
@@ -85,19 +97,35 @@ def write_pass(render_pass, pixels):
 
 
 
+def eevee_engine_id():
+    """EEVEE's engine id: BLENDER_EEVEE in 3.4 and 5.x, BLENDER_EEVEE_NEXT in 4.2 to 4.5."""
+    items = bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items
+    return next(i.identifier for i in items if i.identifier.startswith("BLENDER_EEVEE"))
+
+
+# EEVEE panels for data EdgeLight reads the way EEVEE does: the world's Background node (the
+# only world colour 5.0 renders).
+_EEVEE_PANELS = ("EEVEE_WORLD_PT_surface",)
+
+
 def compat_panels():
     """Built-in panels that list Blender's own engines and should show for EdgeLight too."""
     panels = []
+    eevee = eevee_engine_id()
     for name in dir(bpy.types):
         cls = getattr(bpy.types, name)
         engines = getattr(cls, "COMPAT_ENGINES", None)
+        if not isinstance(engines, set):
+            continue
         # 'BLENDER_RENDER' marks the engine-neutral panels (output, camera, light, colour
         # management); Workbench-only ones (its lighting, colour, film) don't apply to EdgeLight.
-        if isinstance(engines, set) and "BLENDER_RENDER" in engines:
+        if "BLENDER_RENDER" in engines:
             if name.startswith(("MATERIAL_PT_", "EEVEE_MATERIAL_PT_")):
                 continue  # our own material panel replaces these
             if "freestyle" in name.lower():
                 continue  # EdgeLight draws its own lines, Freestyle's settings would mislead
+            panels.append(cls)
+        elif name in _EEVEE_PANELS and eevee in engines:
             panels.append(cls)
     return panels
 

@@ -2,6 +2,8 @@
 from dataclasses import dataclass
 import math
 
+from . import compat
+
 DEFAULT_COLOR = (0.8, 0.8, 0.8)
 
 
@@ -70,7 +72,7 @@ def _float(node, default, *names):
 
 
 def _principled(material):
-    if not (material.use_nodes and material.node_tree):
+    if not compat.uses_nodes(material):
         return None
     for node in material.node_tree.nodes:
         if node.type == 'BSDF_PRINCIPLED':
@@ -102,5 +104,5 @@ def shading_of(material):
     albedo = tuple(b * (1.0 - metallic) for b in base)
     s = material.edgelight
     n = s.shininess if s.use_custom_shininess else shininess_from_roughness(roughness)
-    return Shading(albedo, alpha, spec, float(n), bool(s.enabled), float(s.K), float(s.radius),
+    return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), float(s.K), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon_of(s, base))

@@ -1,9 +1,11 @@
 """EdgeLight settings stored in the .blend: per material and per scene."""
 import bpy
 
-# Bumped when a property's meaning or layout changes, so a load handler can migrate older files
-# (not needed yet: this is the first layout).
-SETTINGS_VERSION = 1
+# The settings layout. Bumped when a stored property is renamed or changes meaning; each bump
+# gets a step in versioning.py that upgrades files saved with the layout before.
+#   1: first layout
+#   2: material `enabled` -> `use_rounding`
+SETTINGS_VERSION = 2
 
 
 def _tag(self, context):
@@ -21,7 +23,7 @@ class EdgeLightRampStop(bpy.types.PropertyGroup):
 
 
 class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
-    enabled: bpy.props.BoolProperty(
+    use_rounding: bpy.props.BoolProperty(
         update=_tag, name="Rounded Edges", default=True,
         description="Round this material's chosen edges with a thin highlight, like a bevel would")
     K: bpy.props.FloatProperty(

@@ -247,7 +247,7 @@ def world_ambient(scene):
     world = scene.world
     if world is None:
         return (0.0, 0.0, 0.0)
-    if world.use_nodes and world.node_tree:
+    if compat.uses_nodes(world):
         for node in world.node_tree.nodes:
             if node.type == 'BACKGROUND':
                 c, s = node.inputs["Color"].default_value, node.inputs["Strength"].default_value

@@ -25,13 +25,13 @@ class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
         return super().poll(context) and context.material is not None
 
     def draw_header(self, context):
-        self.layout.prop(context.material.edgelight, "enabled", text="")
+        self.layout.prop(context.material.edgelight, "use_rounding", text="")
 
     def draw(self, context):
         s = context.material.edgelight
         layout = self.layout
         layout.use_property_split = True
-        layout.active = s.enabled
+        layout.active = s.use_rounding
         layout.prop(s, "radius")
         layout.prop(s, "K")
         layout.prop(s, "tint")

@@ -25,15 +25,17 @@ ONLY = set(argv[2].split(",")) if len(argv) > 2 else None
 def reset(engine="EDGELIGHT"):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     # A factory reset disables add-ons; EdgeLight must be on for its engine and settings.
-    bpy.ops.preferences.addon_enable(module="edgelight")
+    # The module is "bl_ext.user_default.edgelight" when installed as an extension (4.2+).
+    bpy.ops.preferences.addon_enable(module=os.environ.get("EDGELIGHT_MODULE", "edgelight"))
     scene = bpy.context.scene
     scene.render.engine = engine
     scene.render.resolution_x, scene.render.resolution_y = 640, 480
     scene.render.resolution_percentage = 100
     scene.view_settings.view_transform = 'Standard'
     world = bpy.data.worlds.new("World")
-    world.use_nodes = False
     world.color = (0.05, 0.05, 0.06)
+    if world.node_tree:  # 5.0 gives new worlds nodes and renders from them: same colour there
+        world.node_tree.nodes["Background"].inputs["Color"].default_value = (*world.color, 1.0)
     scene.world = world
     return scene
 
@@ -66,7 +68,8 @@ def add_sun(scene, rotation, strength=3.0):
 
 def material(name, color, roughness, radius, rules=None, angle_deg=30.0):
     mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
+    if mat.node_tree is None:  # 5.0 gives new materials nodes (and deprecates use_nodes)
+        mat.use_nodes = True
     bsdf = mat.node_tree.nodes["Principled BSDF"]
     bsdf.inputs["Base Color"].default_value = (*color, 1.0)
     bsdf.inputs["Roughness"].default_value = roughness
@@ -131,7 +134,10 @@ def fandisk_scene(mesh_dir):
     ob = mesh_object(scene, "Fandisk", verts, faces, material("Steel", (0.6, 0.62, 0.65), 0.25, 0.004))
     for p in ob.data.polygons:
         p.use_smooth = True
-    ob.data.use_auto_smooth = True if hasattr(ob.data, "use_auto_smooth") else None
+    if hasattr(ob.data, "use_auto_smooth"):  # up to 4.0
+        ob.data.use_auto_smooth = True  # at its default 30 degrees
+    else:  # 4.1+ replaced Auto Smooth by sharp edges
+        ob.data.set_sharp_from_angle(angle=math.radians(30.0))
     add_camera(scene, (2.2, -2.0, 1.6), (0.0, 0.0, 0.0), lens=45)
     add_sun(scene, (math.radians(40), math.radians(-20), math.radians(60)))
     return scene

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what EdgeLight needs from Debian's packages (idempotent: apt runs only when something
-# is missing). Needs root or sudo.
+# is missing). Needs root or sudo. The test command adds Blender 4.2 / 4.5 / 5.x (setup_bpy.sh).
 set -euo pipefail
 
 packages=(
@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libcgal-demo          # classic meshes (cow, fandisk, bunny, armadillo) in data.tar.gz
   blender python3-numpy # Debian's Blender 3.4 (system Python 3.11) for the add-on
+  python3-venv          # venvs for Blender 4.2 / 4.5 / 5.x as Python modules (setup_bpy.sh)
   xvfb                  # the UI under xvfb-run for viewport tests
   clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the C API fuzz test (scripts/fuzz.sh)
 )

@@ -4,7 +4,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
-user_scripts="$(BUILD_DIR="$build" "$root/scripts/install_addon.sh")"
+user_scripts="$(BUILD_DIR="$build" "$root/scripts/install_addon.sh" "$build/blender_user/viewport/scripts")"
 out="$build/viewport_session"
 rm -rf "$out"
 mkdir -p "$out"

@@ -5,6 +5,8 @@ session by drawing one triangle whose vertices carry their own index."""
 import gpu
 import numpy as np
 
+from .. import compat
+
 _state = {}
 
 _VERT = "void main() { vid = float(gl_VertexID); gl_Position = vec4(pos, 0.0, 1.0); }"
@@ -25,7 +27,7 @@ def first_vertex():
         shader = gpu.shader.create_from_info(info)
         from gpu_extras.batch import batch_for_shader
         batch = batch_for_shader(shader, 'TRIS', {"pos": [(-1.0, -1.0), (3.0, -1.0), (-1.0, 3.0)]})
-        tex = gpu.types.GPUTexture((2, 2), format='R32F')
+        tex = compat.texture((2, 2), 'R32F')
         fb = gpu.types.GPUFrameBuffer(color_slots=(tex,))
         buf = gpu.types.Buffer('FLOAT', 4)
         with fb.bind():

@@ -1,16 +1,45 @@
 """Shared by the add-on tests: open samples, render, find scene points in the image."""
+import importlib
 import os
+import sys
+import unittest
 
 import bpy
 import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
 SAMPLES = os.path.join(ROOT, "blend_samples")
+# The add-on's module: "edgelight" as a legacy add-on (3.4), "bl_ext.user_default.edgelight"
+# as an installed extension (4.2+). Set by scripts/blender_tests.sh.
+MODULE = os.environ.get("EDGELIGHT_MODULE", "edgelight")
+# None when this Blender draws with the GPU here, else why not (runner.py probes once).
+GPU_UNAVAILABLE = None
 
 
 def addon():
-    import edgelight
-    return edgelight
+    return importlib.import_module(MODULE)
+
+
+def is_module_build():
+    """Blender as a Python module (PyPI's bpy) has no executable of its own."""
+    return not bpy.app.binary_path
+
+
+def blender_command(script, *args, addon=True):
+    """The command that runs `script` in a new headless Blender of this version (with the add-on
+    enabled unless addon=False), as `blender -b --addons MODULE --python script -- args` does."""
+    if is_module_build():
+        return [sys.executable, os.path.join(HERE, "bpy_module.py"), "run" if addon else "run-bare",
+                script, "--", *args]
+    enable = ["--addons", MODULE] if addon else []
+    return [bpy.app.binary_path, "-b", "--factory-startup", "--python-exit-code", "1", *enable,
+            "--python", script, "--", *args]
+
+
+def needs_gpu():
+    if GPU_UNAVAILABLE:
+        raise unittest.SkipTest("needs the GPU")  # the reason: the runner's one "GPU tests skipped" line
 
 
 def open_sample(name, **scene_settings):
@@ -24,11 +53,22 @@ def open_sample(name, **scene_settings):
     return scene
 
 
+def set_world_color(scene, rgb):
+    """The world colour, in the node tree too: 5.0 versions a node-less world into one and
+    renders from it, so world.color alone no longer changes what renders there."""
+    scene.world.color = rgb
+    if scene.world.node_tree:
+        for node in scene.world.node_tree.nodes:
+            if node.type == 'BACKGROUND':
+                node.inputs["Color"].default_value = (*rgb, 1.0)
+
+
 def render(resolution=None, expect_error=False):
     """Renders the current scene; returns the engine's record of it (pixels, buffers, camera).
 
     An engine ERROR report makes the operator raise RuntimeError, as Blender does for any
     operator; with expect_error the record is returned with the error text under "raised"."""
+    needs_gpu()
     scene = bpy.context.scene
     if resolution:
         scene.render.resolution_x, scene.render.resolution_y = resolution

@@ -29,8 +29,7 @@ class Cameras(unittest.TestCase):
         helpers.open_sample("cube")
         s = bpy.context.scene
         s.render.resolution_x, s.render.resolution_y, s.render.resolution_percentage = 400, 300, 50
-        bpy.ops.render.render()
-        self.assertEqual(helpers.addon().engine.last_render["pixels"].shape, (150, 200, 4))
+        self.assertEqual(helpers.render()["pixels"].shape, (150, 200, 4))
 
 
 class Film(unittest.TestCase):
@@ -62,7 +61,7 @@ class Lights(unittest.TestCase):
         ob.location = (0.0, -6.0, 0.0)
         ob.rotation_euler = tuple(math.radians(a) for a in aim)  # default: along +y, at the front face
         bpy.context.scene.collection.objects.link(ob)
-        bpy.context.scene.world.color = (0.0, 0.0, 0.0)
+        helpers.set_world_color(bpy.context.scene, (0.0, 0.0, 0.0))
         rec = helpers.render(resolution=(160, 120))
         xy = helpers.project(rec, [(0.0, -1.0, 0.0)])[0]  # centre of the front face
         return helpers.luminance(helpers.sample(rec["surface"], xy[None])[0, :3])

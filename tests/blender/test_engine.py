@@ -9,12 +9,24 @@ import helpers
 
 class EngineRegisters(unittest.TestCase):
     def test_engine_is_listed(self):
-        engines = [cls.bl_idname for cls in bpy.types.RenderEngine.__subclasses__()]
+        # 4.x registers engines without a bl_idname of their own (HydraRenderEngine's base class).
+        engines = [getattr(cls, "bl_idname", None) for cls in bpy.types.RenderEngine.__subclasses__()]
         self.assertIn("EDGELIGHT", engines)
         bpy.context.scene.render.engine = "EDGELIGHT"
         self.assertEqual(bpy.context.scene.render.engine, "EDGELIGHT")
         self.assertTrue(hasattr(bpy.types.Material, "edgelight"))
         self.assertTrue(hasattr(bpy.types.Scene, "edgelight"))
+
+
+class Panels(unittest.TestCase):
+    def test_blender_panels_for_lights_cameras_output_and_world_show_for_edgelight(self):
+        compat = helpers.addon().compat
+        engines = [i.identifier for i in bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items]
+        self.assertIn(compat.eevee_engine_id(), engines)
+        for name in ("DATA_PT_light", "DATA_PT_lens", "RENDER_PT_format", "EEVEE_WORLD_PT_surface"):
+            self.assertIn("EDGELIGHT", getattr(bpy.types, name).COMPAT_ENGINES, name)
+        self.assertNotIn("EDGELIGHT", bpy.types.EEVEE_MATERIAL_PT_surface.COMPAT_ENGINES,
+                         "EdgeLight's own material panel replaces it")
 
 
 class RendersEverySample(unittest.TestCase):

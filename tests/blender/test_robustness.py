@@ -105,7 +105,7 @@ def fingerprint():
             h.update(attr.name.encode())
         h.update(str(sorted(me.keys())).encode())
     for mat in bpy.data.materials:
-        h.update(repr([getattr(mat.edgelight, k) for k in ("enabled", "K", "radius", "angle")]).encode())
+        h.update(repr([getattr(mat.edgelight, k) for k in ("use_rounding", "K", "radius", "angle")]).encode())
         h.update(repr(tuple(mat.diffuse_color)).encode())
         if mat.node_tree:
             for node in mat.node_tree.nodes:

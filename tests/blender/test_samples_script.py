@@ -14,8 +14,7 @@ class MakeSamples(unittest.TestCase):
     def test_regenerates_all_samples(self):
         out = tempfile.mkdtemp()
         mesh_dir = os.environ.get("EDGELIGHT_MESH_DIR", "/usr/share/doc/libcgal-dev")
-        cmd = [bpy.app.binary_path, "-b", "--factory-startup", "--addons", "edgelight", "--python",
-               os.path.join(helpers.SAMPLES, "make_samples.py"), "--", out, mesh_dir]
+        cmd = helpers.blender_command(os.path.join(helpers.SAMPLES, "make_samples.py"), out, mesh_dir)
         run = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
         self.assertEqual(run.returncode, 0, run.stdout[-2000:] + run.stderr[-2000:])
         for name in ("cube", "fandisk", "prop", "toon"):

@@ -15,7 +15,7 @@ def toon_sphere(location=(0.0, 0.0, 0.0), name="Toon"):
     ob = bpy.context.object
     mat = bpy.data.materials.new(name)
     mat.use_nodes = True
-    mat.edgelight.enabled = False  # a sphere has no edges to round; keep the surface pure
+    mat.edgelight.use_rounding = False  # a sphere has no edges to round; keep the surface pure
     ob.data.materials.append(mat)
     return ob, mat
 

@@ -41,7 +41,7 @@ class TwoMaterials(unittest.TestCase):
         ob = bpy.data.objects["Cube"]
         top = bpy.data.materials["Cube"].copy()
         top.name = "Top"
-        top.edgelight.enabled = enabled
+        top.edgelight.use_rounding = enabled
         if radius is not None:
             top.edgelight.radius = radius
         ob.data.materials.append(top)

@@ -1,0 +1,110 @@
+"""Upgrades EdgeLight settings saved by older add-on versions when a .blend is opened.
+
+Every settings group stores the layout it was saved with in `settings_version`, stamped on save.
+Files written before stamping existed (layout 1) have no stamp. On load each group is brought
+from its layout to properties.SETTINGS_VERSION one step at a time.
+
+Values of properties the current layout no longer defines are still in the file, as raw ID
+properties of the group: `group.get(name)` reads them (group-level access works 3.4 through
+5.x; only `id["edgelight"]` is gone in 5.0).
+"""
+import bpy
+from bpy.app.handlers import persistent
+
+from .properties import SETTINGS_VERSION
+
+STAMP = "settings_version"
+
+
+def _material_1_to_2(group):
+    """Layout 2 renamed `enabled` to `use_rounding` (Blender's `use_` convention for toggles)."""
+    if "enabled" in group.keys():
+        group.use_rounding = bool(group["enabled"])
+        del group["enabled"]
+
+
+# kind -> {layout: step from that layout to the next}
+STEPS = {
+    "material": {1: _material_1_to_2},
+    "scene": {},
+}
+
+
+def stored_layout(group):
+    """The layout a group was saved with; None if it stores nothing (all defaults)."""
+    if not group.keys():
+        return None
+    return int(group.get(STAMP, 1))
+
+
+def upgrade(group, kind):
+    """Brings one group to the current layout. Returns the layout it had (None: nothing stored)."""
+    layout = stored_layout(group)
+    if layout is None:
+        return None
+    for step in range(layout, SETTINGS_VERSION):
+        fn = STEPS[kind].get(step)
+        if fn:
+            fn(group)
+    if layout < SETTINGS_VERSION:  # a newer add-on's stamp is kept: its data is not ours to relabel
+        group.settings_version = SETTINGS_VERSION
+    return layout
+
+
+def _groups():
+    """(kind, group) for every editable ID's settings; linked IDs belong to their library file."""
+    for kind, ids in (("material", bpy.data.materials), ("scene", bpy.data.scenes)):
+        for id_block in ids:
+            if id_block.library is None:
+                yield kind, id_block.edgelight
+
+
+def upgrade_all():
+    """Upgrades every group; returns {old layout: count} of the groups that were older."""
+    upgraded = {}
+    for kind, group in _groups():
+        layout = upgrade(group, kind)
+        if layout is not None and layout < SETTINGS_VERSION:
+            upgraded[layout] = upgraded.get(layout, 0) + 1
+    return upgraded
+
+
+def stamp_all():
+    """Records the current layout in every group that stores something, so the next load knows."""
+    for _kind, group in _groups():
+        if group.keys() and group.get(STAMP, 0) < SETTINGS_VERSION:
+            group.settings_version = SETTINGS_VERSION
+
+
+@persistent
+def _load_post(*_args):
+    upgraded = upgrade_all()
+    if upgraded:
+        print(f"EdgeLight: upgraded settings of {sum(upgraded.values())} data-blocks to layout {SETTINGS_VERSION}")
+
+
+def _upgrade_open_file():
+    _load_post()
+    return None  # once
+
+
+@persistent
+def _save_pre(*_args):
+    stamp_all()
+
+
+def register():
+    bpy.app.handlers.load_post.append(_load_post)
+    bpy.app.handlers.save_pre.append(_save_pre)
+    # Enabled after a file was opened: bpy.data is off limits while add-ons register, so upgrade
+    # from the first timer tick. Timers run in the UI only: headless, put --addons before the
+    # .blend on the command line (then load_post does it).
+    bpy.app.timers.register(_upgrade_open_file, first_interval=0.0)
+
+
+def unregister():
+    if bpy.app.timers.is_registered(_upgrade_open_file):
+        bpy.app.timers.unregister(_upgrade_open_file)
+    for handlers, fn in ((bpy.app.handlers.load_post, _load_post), (bpy.app.handlers.save_pre, _save_pre)):
+        while fn in handlers:
+            handlers.remove(fn)

@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""Assembles the add-on package an artist installs: one zip, edgelight/ inside, holding the
+Python package, blender_manifest.toml (Blender 4.2+ extension), bl_info (Blender 3.4 legacy
+add-on), the shaders and libedgelight.so. Called by the CMake target `package_addon`.
+
+    make_package.py ROOT LIBRARY OUT_ZIP
+"""
+import ast
+import os
+import re
+import sys
+import zipfile
+
+
+def manifest_version(path):
+    with open(path, encoding="utf-8") as f:
+        m = re.search(r'^version\s*=\s*"([0-9.]+)"', f.read(), re.M)
+    return m.group(1)
+
+
+def bl_info_version(path):
+    with open(path, encoding="utf-8") as f:
+        tree = ast.parse(f.read())
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and getattr(node.targets[0], "id", "") == "bl_info":
+            info = ast.literal_eval(node.value)
+            return ".".join(str(v) for v in info["version"])
+    raise SystemExit(f"{path}: no bl_info")
+
+
+def files(root):
+    """(path on disk, path in the zip) for every file of the package."""
+    addon, shaders = os.path.join(root, "addon"), os.path.join(root, "shaders")
+    for base, prefix in ((addon, "edgelight"), (shaders, "edgelight/shaders")):
+        for dirpath, dirnames, filenames in os.walk(base):
+            dirnames[:] = sorted(d for d in dirnames if d != "__pycache__")
+            for name in sorted(filenames):
+                if name.endswith(".pyc"):
+                    continue
+                path = os.path.join(dirpath, name)
+                yield path, prefix + "/" + os.path.relpath(path, base).replace(os.sep, "/")
+
+
+def main(root, library, out):
+    manifest = os.path.join(root, "addon", "blender_manifest.toml")
+    version, legacy = manifest_version(manifest), bl_info_version(os.path.join(root, "addon", "__init__.py"))
+    if version != legacy:
+        raise SystemExit(f"blender_manifest.toml version {version} != bl_info version {legacy}")
+    os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
+    tmp = out + ".tmp"
+    with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as z:
+        for path, arcname in files(root):
+            z.write(path, arcname)
+        z.write(library, "edgelight/libedgelight.so")
+    os.replace(tmp, out)
+    print(f"package: {out}")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4:
+        raise SystemExit(__doc__)
+    main(*sys.argv[1:])

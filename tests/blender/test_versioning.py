@@ -1,0 +1,92 @@
+"""A .blend saved with an older settings layout opens with its settings intact.
+
+tests/data/settings_layout1.blend was saved by Blender 3.4 with the layout-1 add-on
+(tests/data/make_settings_layout1.py), where the material toggle was called `enabled`.
+"""
+import math
+import os
+import tempfile
+import unittest
+
+import bpy
+
+import helpers
+
+LAYOUT1 = os.path.join(helpers.ROOT, "tests", "data", "settings_layout1.blend")
+
+
+def current_layout():
+    return helpers.addon().properties.SETTINGS_VERSION
+
+
+class SampleIsLayout1(unittest.TestCase):
+    def test_linked_material_keeps_the_old_layout(self):
+        # Linked data is not upgraded (it belongs to its file): it shows what the file stores.
+        helpers.open_sample("cube")
+        with bpy.data.libraries.load(LAYOUT1, link=True) as (src, dst):
+            dst.materials = ["Cube"]
+        group = dst.materials[0].edgelight
+        self.assertIn("enabled", group.keys())
+        self.assertEqual(group["enabled"], False)
+        self.assertNotIn("use_rounding", group.keys())
+        self.assertIsNone(group.get("settings_version"), "layout 1 files carry no stamp")
+
+
+class OpensUpgraded(unittest.TestCase):
+    def check_values(self):
+        cube = bpy.data.materials["Cube"].edgelight
+        self.assertFalse(cube.use_rounding, "enabled=False became use_rounding=False")
+        self.assertAlmostEqual(cube.K, 2.5, places=6)
+        self.assertAlmostEqual(cube.radius, 0.033, places=6)
+        self.assertEqual(tuple(round(c, 6) for c in cube.tint), (0.2, 0.4, 0.6))
+        self.assertEqual(set(cube.selection), {'SHARP', 'ANGLE'})
+        self.assertAlmostEqual(cube.angle, math.radians(40.0), places=6)
+        self.assertTrue(cube.use_custom_shininess)
+        self.assertEqual(cube.shininess, 123.0)
+        spare = bpy.data.materials["Spare"].edgelight
+        self.assertTrue(spare.use_rounding)
+        self.assertAlmostEqual(spare.radius, 0.05, places=6)
+        scene = bpy.context.scene.edgelight
+        self.assertEqual((scene.samples, scene.viewport_samples, scene.highlights), (5, 3, True))
+        for group in (cube, spare, scene):
+            self.assertEqual(group.get("settings_version"), current_layout())
+            self.assertNotIn("enabled", group.keys(), "the old key is gone once moved")
+
+    def test_values_intact_after_open(self):
+        bpy.ops.wm.open_mainfile(filepath=LAYOUT1)
+        self.check_values()
+
+    def test_values_intact_after_save_and_reopen(self):
+        bpy.ops.wm.open_mainfile(filepath=LAYOUT1)
+        path = os.path.join(tempfile.mkdtemp(), "upgraded.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        self.check_values()
+
+    def test_upgraded_setting_drives_the_render(self):
+        bpy.ops.wm.open_mainfile(filepath=LAYOUT1)
+        bpy.context.scene.edgelight.samples = 1
+        off = helpers.render(resolution=(160, 120))
+        self.assertEqual(off["stats"].edges_drawn, 0, "rounding was off in the old file")
+        bpy.data.materials["Cube"].edgelight.use_rounding = True
+        on = helpers.render(resolution=(160, 120))
+        self.assertGreater(on["stats"].edges_drawn, 0)
+
+
+class CurrentFilesAreStamped(unittest.TestCase):
+    def test_save_stamps_groups_that_store_settings(self):
+        helpers.open_sample("cube")
+        bpy.data.materials["Cube"].edgelight.use_rounding = False
+        untouched = bpy.data.materials.new("Untouched")
+        untouched.use_fake_user = True
+        path = os.path.join(tempfile.mkdtemp(), "current.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        cube = bpy.data.materials["Cube"].edgelight
+        self.assertEqual(cube.get("settings_version"), current_layout())
+        self.assertFalse(cube.use_rounding)
+        self.assertEqual(len(bpy.data.materials["Untouched"].edgelight.keys()), 0, "defaults add no data")
+
+
+if __name__ == "__main__":
+    unittest.main()
