@@ -120,7 +120,7 @@ def empty_scene(width=400, height=400, **scene_settings):
     """A factory-empty scene rendered by EdgeLight: no objects, a dark world, one sample."""
     bpy.ops.wm.read_factory_settings(use_empty=True)
     import addon_utils
-    addon_utils.enable("edgelight", default_set=True)
+    addon_utils.enable(MODULE, default_set=True)  # a factory reset disables add-ons
     scene = bpy.context.scene
     scene.render.engine = "EDGELIGHT"
     scene.render.resolution_x, scene.render.resolution_y = width, height
@@ -173,3 +173,22 @@ def only_lines(scene, **enabled):
         if name in enabled:
             style.width = enabled[name]
     return s
+
+
+_EDGE_MARKS = {  # kind: (MeshEdge property of older versions, edge attribute of newer ones)
+    "freestyle": ("use_freestyle_mark", "freestyle_edge"),
+    "sharp": ("use_edge_sharp", "sharp_edge"),
+    "seam": ("use_seam", ".uv_seam"),
+}
+
+
+def mark_edge(mesh, kind, index, value=True):
+    """Marks one edge Freestyle / sharp / seam on any Blender version (5.0 keeps Freestyle marks
+    in an attribute only)."""
+    prop, attr_name = _EDGE_MARKS[kind]
+    edge = mesh.edges[index]
+    if hasattr(edge, prop):
+        setattr(edge, prop, value)
+        return
+    attr = mesh.attributes.get(attr_name) or mesh.attributes.new(attr_name, 'BOOLEAN', 'EDGE')
+    attr.data[index].value = value

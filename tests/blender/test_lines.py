@@ -175,9 +175,9 @@ class MarksAndMaterials(unittest.TestCase):
     def test_marked_edges_follow_the_chosen_marks(self):
         scene, ob = self.cube(marked=2.0)
         me = ob.data
-        me.edges[0].use_freestyle_mark = True
-        me.edges[1].use_seam = True
-        me.edges[2].use_edge_sharp = True
+        helpers.mark_edge(me, "freestyle", 0)
+        helpers.mark_edge(me, "seam", 1)
+        helpers.mark_edge(me, "sharp", 2)
         counts = {}
         for marks in ({'FREESTYLE'}, {'SEAM'}, {'FREESTYLE', 'SHARP'}, {'FREESTYLE', 'SHARP', 'SEAM'}):
             scene.edgelight.marks = marks
@@ -231,7 +231,7 @@ class Taper(unittest.TestCase):
         co = np.array([v.co[:] for v in mesh.vertices])
         for e in mesh.edges:
             a, b = co[e.vertices[0]], co[e.vertices[1]]
-            e.use_freestyle_mark = abs(a[1]) < 1e-6 and abs(b[1]) < 1e-6
+            helpers.mark_edge(mesh, "freestyle", e.index, abs(a[1]) < 1e-6 and abs(b[1]) < 1e-6)
         helpers.add_camera((0.0, 0.0, 9.0), lens=50.0)
         helpers.add_sun((0.0, 0.0, 1.0))
         rec = helpers.render()
