@@ -97,6 +97,7 @@ class Targets:
         self.highlight_fb = gpu.types.GPUFrameBuffer(color_slots=(self.highlight,))
         self.result_fb = gpu.types.GPUFrameBuffer(color_slots=(self.result,))
         self.line_fb = gpu.types.GPUFrameBuffer(depth_slot=self.line_depth, color_slots=(self.lines,))
+        self.lines_empty = False  # the line target holds no stroke (cleared, none drawn since)
 
 
 @dataclass

@@ -46,9 +46,12 @@ def _mat(m):
 
 def draw_lines(targets, instances, settings, ubo, stats):
     """instances: [(model matrix, {type: (batch, count)})]; types drawn in settings' order."""
+    if settings is None and targets.lines_empty:
+        return  # still clear from the last frame: no full-screen clear per frame without lines
     shader = shader_lib.get("line")
     with targets.line_fb.bind():
         targets.line_fb.clear(color=(0.0, 0.0, 0.0, 0.0), depth=1.0)
+        targets.lines_empty = settings is None
         if settings is None:
             return
         gpu.state.depth_test_set('LESS')
