@@ -25,6 +25,7 @@ void main()
   }
 
   /* Short edges come shaded from the vertex shader; long ones are shaded here, per pixel. */
+  int method = el_method();
   bool per_edge = edge_color.w > 0.5;
   ElArc g;
   float width, s;
@@ -41,14 +42,58 @@ void main()
     discard;
   }
 
-  /* Coverage of the pixel by the band of projected width w (pixels) around the edge line. */
+  /* Band of projected width w (pixels) centred on the edge line, the pixel's box-filtered
+   * coverage of it, and the whole visible arc's mean colour: exact while w <= 1 (the paper's
+   * assumption), and the method of every pixel until issue 6. */
   float w_px = edge_radius * width / world_per_px;
-  float cover = clamp(min(across + 0.5, 0.5 * w_px) - max(across - 0.5, -0.5 * w_px), 0.0, 1.0);
-  float W = clamp(tint.w * cover, 0.0, 1.0) * el_axial_ramp(s);
-  if (!(W > 0.0)) {
+  float t_wide = method == EL_METHOD_PARTIAL ? clamp(w_px - 1.0, 0.0, 1.0) : (method == EL_METHOD_QUADRATURE ? 1.0 : 0.0);
+  float ramp = el_axial_ramp(s);
+  vec4 result = vec4(0.0);
+  if (t_wide < 1.0) {
+    float cover = clamp(min(across + 0.5, 0.5 * w_px) - max(across - 0.5, -0.5 * w_px), 0.0, 1.0);
+    if (method == EL_METHOD_PAPER) {
+      /* A one-pixel line whatever the width, weighted by the whole arc's image width. */
+      if (per_edge) {
+        g = el_arc(edge_dir, edge_n1, edge_n2, V);
+      }
+      float full = edge_radius * length(el_arc_normal(g, 0.0) - el_arc_normal(g, g.alpha)) / world_per_px;
+      cover = clamp(1.0 - abs(across), 0.0, 1.0) * min(full, 1.0);
+    }
+    float W = clamp(tint.w * cover, 0.0, 1.0) * ramp;
+    if (W > 0.0) {
+      vec3 col = per_edge ? edge_color.rgb : el_edge_colour(g, X, V, edge_dir);
+      result = vec4(col * W, W);
+    }
+  }
+  /* Wider bands (docs/highlight_math.md, section 15): the band where the fillet's image really
+   * lies, and each pixel shaded with the part of the arc whose image it covers. Between 1 and 2
+   * pixels the two are blended, so nothing jumps as an edge widens. */
+  if (t_wide > 0.0) {
+    if (per_edge) {
+      g = el_arc(edge_dir, edge_n1, edge_n2, V);
+    }
+    vec3 P = el_safe_normalize(cross(el_safe_normalize(edge_dir), V));
+    /* Which way P points on screen (the sign of its image along edge_screen's normal). */
+    vec4 q0 = frame.projection * (frame.view * vec4(X, 1.0));
+    vec4 q1 = frame.projection * (frame.view * vec4(X + P * world_per_px, 1.0));
+    float side = dot((q1.xy / q1.w - q0.xy / q0.w) * frame.viewport.xy, edge_screen.zw) < 0.0 ? -1.0 : 1.0;
+    vec2 ends = el_band_ends(g, P) * (side * edge_radius / world_per_px);
+    float b0 = min(ends.x, ends.y), b1 = max(ends.x, ends.y);
+    float pa = max(across - 0.5, b0), pb = min(across + 0.5, b1);
+    float cover = clamp(pb - pa, 0.0, 1.0);
+    float W = clamp(tint.w * cover, 0.0, 1.0) * ramp;
+    vec4 wide = vec4(0.0);
+    if (W > 0.0 && b1 > b0) {
+      /* Fractions of the band from vis.lo's end. */
+      float fa = (pa - ends.x) / (ends.y - ends.x), fb = (pb - ends.x) / (ends.y - ends.x);
+      ElArc sub = el_sub_arc(g, clamp(min(fa, fb), 0.0, 1.0), clamp(max(fa, fb), 0.0, 1.0));
+      vec3 col = method == EL_METHOD_QUADRATURE ? el_edge_colour_quadrature(sub, X, V) : el_edge_colour(sub, X, V, edge_dir);
+      wide = vec4(col * W, W);
+    }
+    result = mix(result, wide, t_wide);
+  }
+  if (!(result.w > 0.0)) {
     discard;
   }
-
-  vec3 col = per_edge ? edge_color.rgb : el_edge_colour(g, X, V, edge_dir);
-  out_color = vec4(col * W, W);
+  out_color = result;
 }

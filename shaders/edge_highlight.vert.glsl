@@ -46,7 +46,19 @@ void main()
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     return;
   }
-  float half_px = 0.5 * min(width_px, 4096.0) + 0.5 + 1.0 / 64.0;
+  /* Bands wider than a pixel lie where the fillet's image is (edge_band.glsl): up to its
+   * tangent length r tan(alpha / 2) = r |N1 - N2| / |N1 + N2| from the line on either side. The
+   * paper's method draws a one-pixel line whatever the width. */
+  int method = el_method();
+  float reach_px = 0.5 * width_px;
+  if (method == EL_METHOD_PARTIAL || method == EL_METHOD_QUADRATURE) {
+    float tangent = length(edge_n1 - edge_n2) / max(length(edge_n1 + edge_n2), 1e-3);
+    reach_px = max(reach_px, edge_radius * tangent * px_per_unit);
+  }
+  float half_px = min(reach_px, 2048.0) + 0.5 + 1.0 / 64.0;
+  if (method == EL_METHOD_PAPER) {
+    half_px = max(half_px, 1.0 + 1.0 / 64.0);
+  }
 
   /* Short edges: shaded once, at the midpoint, by the edge's one shading vertex (corner.w = 1),
    * which provides both triangles' flat outputs (passes/batches.py). */

@@ -1,7 +1,7 @@
 /* The rounded-edge integral of one pixel (docs/highlight_math.md): the float path of
  * native/src/highlight_arc.cpp and the table lookup of highlight_table.cpp, step for step, so
  * the native tests of that code speak for this shader. Needs the sampler cos_power_table and the
- * push constant table_params = (layout, m_max, warp_c, unused). */
+ * push constant table_params = (layout, m_max, warp_c, edge method: edge_band.glsl). */
 #define EL_PI 3.14159265358979
 #define EL_HALF_PI 1.57079632679490
 #define EL_ANTIPARALLEL_BAND 1e-6

@@ -3,6 +3,7 @@
 The same code serves the final render and (later) the viewport; only the camera, the size and
 where the result goes differ.
 """
+import os
 from dataclasses import dataclass
 
 import gpu
@@ -13,6 +14,15 @@ from . import batches, line_pass, shader_lib, table, toon
 from .. import lines as ink
 
 MAX_LIGHTS = 16
+
+# How the edge pass shades bands (shaders/edge_band.glsl). Not a user setting: the ground-truth
+# benchmark (bench/ground_truth.py) sets EDGELIGHT_EDGE_METHOD to render the earlier methods with
+# the same shaders. Unset or unknown: "partial", the add-on's method.
+EDGE_METHODS = {"partial": 0.0, "whole": 1.0, "paper": 2.0, "quadrature": 3.0}
+
+
+def edge_method():
+    return EDGE_METHODS.get(os.environ.get("EDGELIGHT_EDGE_METHOD", "partial"), 0.0)
 
 
 @dataclass
@@ -161,7 +171,7 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
         shader.uniform_block("frame", ubo)
         shader.uniform_sampler("cos_power_table", tex)
         shader.uniform_sampler("surface_depth", targets.surface_depth)
-        shader.uniform_float("table_params", params)
+        shader.uniform_float("table_params", (*params[:3], edge_method()))
         for inst in scene.instances:
             gm = gpu_meshes[id(inst.mesh)]
             if not gm.edges:

@@ -8,7 +8,7 @@ _state = {}
 
 
 def table(lib=None):
-    """(texture, params): params = (layout, m_max, warp_c, unused) for the shader."""
+    """(texture, params): params = (layout, m_max, warp_c, 0); the edge pass puts its method in w."""
     if "texture" not in _state:
         t = native.HighlightTable(lib=lib)  # the library's recommended default (docs/highlight_math.md)
         info = t.info()

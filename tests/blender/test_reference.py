@@ -1,5 +1,6 @@
 """The edge highlight shader against the native double-precision reference integral."""
 import math
+import os
 import unittest
 
 import bpy
@@ -14,6 +15,17 @@ N1, N2 = (0.0, 0.0, 1.0), (0.0, -1.0, 0.0)                      # top face, fron
 RELATIVE_TOLERANCE = 1e-4  # measured: 4.3e-6 on llvmpipe
 
 
+def render_whole_arc(resolution):
+    """These tests check the arc integral itself, which the whole-arc method applies to every
+    pixel of a band; bands wider than a pixel otherwise shade each pixel with its own part of
+    the arc (test_wide_edges.py checks that)."""
+    os.environ["EDGELIGHT_EDGE_METHOD"] = "whole"
+    try:
+        return helpers.render(resolution=resolution)
+    finally:
+        del os.environ["EDGELIGHT_EDGE_METHOD"]
+
+
 def blinn_norm(n):
     return (n + 8.0) / (8.0 * math.pi)
 
@@ -24,7 +36,7 @@ class ShaderMatchesReference(unittest.TestCase):
         helpers.open_sample("cube")
         mat = bpy.data.materials["Cube"]
         mat.edgelight.radius = 0.05  # a few pixels wide: many pixels to compare
-        rec = helpers.render(resolution=(640, 480))
+        rec = render_whole_arc((640, 480))
         cam, scene = rec["camera"], rec["scene"]
         hl = rec["highlight"]
         shading = scene.instances[0].mesh.slot_shading[0]
@@ -80,7 +92,7 @@ class ShortEdgesMatchReference(unittest.TestCase):
         native = helpers.addon().native
         helpers.open_sample("cube")
         bpy.data.materials["Cube"].edgelight.radius = 0.2  # wide enough to cover whole pixels
-        rec = helpers.render(resolution=(48, 36))
+        rec = render_whole_arc((48, 36))
         cam, scene, hl = rec["camera"], rec["scene"], rec["highlight"]
         s0, s1 = helpers.project(rec, [A, B])
         self.assertLess(np.linalg.norm(s1 - s0), 16.0, "the edge is short on screen")
