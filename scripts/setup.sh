@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   libglm-dev libassimp-dev nlohmann-json3-dev
+  libosmesa6-dev libpng-dev  # edgelight-render: the add-on's shaders offscreen (llvmpipe), PNG out
   libgtest-dev libbenchmark-dev
   libcgal-demo          # classic meshes (cow, fandisk, bunny, armadillo) in data.tar.gz
   blender python3-numpy # Debian's Blender 3.4 (system Python 3.11) for the add-on

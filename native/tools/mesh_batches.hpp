@@ -1,0 +1,51 @@
+// What the passes draw for one mesh, built on the CPU as addon/scene_sync.py and
+// addon/passes/batches.py build it: surface corners, the rounded edges the library classifies,
+// and their screen-space quads.
+#pragma once
+
+#include "mesh_io.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace el_tools {
+
+// Corner arrays of the surface pass (3 corners per triangle; vertex_in "pos", "nor").
+struct SurfaceCorners {
+    std::vector<float> pos, nor;  // xyz per corner
+};
+
+// Rounded edges: manifold, not degenerate, angle between face normals above the threshold (the
+// add-on's default 'ANGLE' rule). N1 is the normal of the face that runs p0 -> p1.
+struct EdgeSet {
+    std::vector<std::array<float, 3>> p0, p1, n1, n2;
+    size_t size() const { return p0.size(); }
+};
+
+// One quad per edge, in the edge_highlight program's vertex_in order (p0, p1, n1, n2, corner).
+struct EdgeQuads {
+    std::vector<float> p0, p1, n1, n2;  // 3 per vertex
+    std::vector<float> corner;          // 4 per vertex: end, side, radius, shading vertex
+    std::vector<uint32_t> indices;      // 6 per edge
+};
+
+// Corner normals as Blender's auto smooth gives them: the angle-weighted normals of the faces
+// around the corner's vertex that lie within `smooth_deg` of the corner's own face (a cube at
+// 30 degrees is flat-shaded, fandisk is smooth between its creases).
+SurfaceCorners surface_corners(const LoadedMesh& mesh, float smooth_deg);
+
+// The edges above `crease_deg`, through the library's C ABI (el_mesh_classify). Throws
+// std::runtime_error with the library's message.
+EdgeSet choose_edges(const LoadedMesh& mesh, float crease_deg);
+
+// Which vertex of a triangle provides its flat outputs. The renderer sets the convention with
+// glProvokingVertex; the quads' triangles are ordered so the edge's shading vertex is that one.
+enum class Provoking { first, last };
+
+// Quads as passes/batches.py lays them out: every edge's shading corner (corner.w = 1, end 0,
+// side -1) first in the buffer, then its other three corners edge by edge; both triangles of a
+// quad start (first) or end (last) at the shading corner.
+EdgeQuads edge_quads(const EdgeSet& edges, float radius, Provoking provoking);
+
+}  // namespace el_tools

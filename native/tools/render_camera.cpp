@@ -1,0 +1,95 @@
+#include "render_camera.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace el_tools {
+namespace {
+
+constexpr int kMaxLights = 16;  // EL_MAX_LIGHTS in shaders/frame_data.glsl
+
+void push_mat(std::vector<float>& out, const glm::dmat4& m) {
+    for (int c = 0; c < 4; ++c) {  // glm is column-major, as std140 wants
+        for (int r = 0; r < 4; ++r) out.push_back(float(m[c][r]));
+    }
+}
+
+void push_vec(std::vector<float>& out, double x, double y, double z, double w) {
+    out.insert(out.end(), {float(x), float(y), float(z), float(w)});
+}
+
+double halton(int i, int base) {
+    double f = 1.0, r = 0.0;
+    while (i > 0) {
+        f /= base;
+        r += f * (i % base);
+        i /= base;
+    }
+    return r;
+}
+
+}  // namespace
+
+glm::dvec3 Camera::view_dir() const { return glm::normalize(target - eye); }
+
+glm::dmat4 Camera::view() const {
+    glm::dvec3 up(0.0, 0.0, 1.0);
+    if (glm::length(glm::cross(view_dir(), up)) < 1e-6) up = glm::dvec3(0.0, 1.0, 0.0);  // looking straight down
+    return glm::lookAt(eye, target, up);
+}
+
+glm::dmat4 Camera::projection() const {
+    const double f = 1.0 / std::tan(glm::radians(fov_deg) * 0.5);
+    const double aspect = double(width) / double(height);
+    glm::dmat4 p = glm::perspective(glm::radians(fov_deg), aspect, clip_start, clip_end);
+    // Sensor fit AUTO: the field of view spans the larger side.
+    p[0][0] = width >= height ? f : f / aspect;
+    p[1][1] = width >= height ? f * aspect : f;
+    return p;
+}
+
+double Camera::px_per_unit() const { return projection()[0][0] * width / 2.0; }
+
+glm::dvec2 jitter(int sample) {
+    if (sample == 0) return {0.0, 0.0};
+    return {halton(sample, 2) - 0.5, halton(sample, 3) - 0.5};
+}
+
+glm::dmat4 jittered_projection(const glm::dmat4& projection, int width, int height, glm::dvec2 d) {
+    glm::dmat4 t(1.0);
+    t[3][0] = 2.0 * d.x / width;
+    t[3][1] = 2.0 * d.y / height;
+    return t * projection;
+}
+
+std::vector<float> frame_data(const Camera& camera, const glm::dmat4& projection, const std::vector<Sun>& suns,
+                              const glm::dvec3& ambient) {
+    if (suns.size() > size_t(kMaxLights)) throw std::invalid_argument("at most 16 lights");
+    std::vector<float> out;
+    push_mat(out, camera.view());
+    push_mat(out, projection);
+    push_vec(out, camera.eye.x, camera.eye.y, camera.eye.z, 1.0);  // w = 1: perspective
+    const glm::dvec3 d = camera.view_dir();
+    push_vec(out, d.x, d.y, d.z, 0.0);
+    push_vec(out, camera.width, camera.height, 1.0 / camera.width, 1.0 / camera.height);
+    push_vec(out, ambient.x, ambient.y, ambient.z, 1.0);
+    push_vec(out, camera.px_per_unit(), double(suns.size()), 0.0, 0.0);
+    std::vector<float> color(4 * kMaxLights, 0.0f), position(4 * kMaxLights, 0.0f), direction(4 * kMaxLights, 0.0f),
+        spot(4 * kMaxLights, 0.0f);
+    for (size_t i = 0; i < suns.size(); ++i) {
+        const glm::dvec3 dir = -glm::normalize(suns[i].to_light);  // where the light points
+        color[4 * i + 0] = float(suns[i].color.x);
+        color[4 * i + 1] = float(suns[i].color.y);
+        color[4 * i + 2] = float(suns[i].color.z);
+        color[4 * i + 3] = 0.0f;  // kind 0: sun
+        direction[4 * i + 0] = float(dir.x);
+        direction[4 * i + 1] = float(dir.y);
+        direction[4 * i + 2] = float(dir.z);
+    }
+    for (const auto* a : {&color, &position, &direction, &spot}) out.insert(out.end(), a->begin(), a->end());
+    return out;
+}
+
+}  // namespace el_tools

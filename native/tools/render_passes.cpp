@@ -1,0 +1,164 @@
+#include "render_passes.hpp"
+
+#include <edgelight/edgelight.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace el_tools {
+namespace {
+
+// Flat outputs come from each triangle's last vertex, as on Blender's OpenGL backend (see
+// addon/passes/provoking.py, which measures it there); edge_quads() orders the triangles to
+// match, so the edge's shading vertex provides them.
+constexpr GLenum kProvokingGl = GL_LAST_VERTEX_CONVENTION;
+constexpr Provoking kProvoking = Provoking::last;
+
+void check(el_status s) {
+    if (s != EL_OK) throw std::runtime_error(std::string(el_status_name(s)) + ": " + el_last_error());
+}
+
+// The library's recommended F(phi, m) table as an R32F texture, with the shader's
+// table_params = (layout, m_max, warp_c, unused), as addon/passes/table.py uploads it.
+std::unique_ptr<Texture> highlight_table(glm::vec4& params) {
+    const el_table_desc desc = EL_TABLE_DEFAULT_DESC;
+    el_highlight_table* t = nullptr;
+    check(el_highlight_table_create(&desc, &t));
+    std::unique_ptr<el_highlight_table, void (*)(el_highlight_table*)> owner(t, el_highlight_table_destroy);
+    el_table_info info{};
+    check(el_highlight_table_get_info(t, &info));
+    std::vector<float> data(size_t(info.phi_count) * info.m_count);
+    check(el_highlight_table_copy(t, data.data(), data.size()));
+    params = {float(info.layout), info.m_max, info.warp_c, 0.0f};
+    return std::make_unique<Texture>(int(info.phi_count), int(info.m_count), GL_R32F, data.data());
+}
+
+void blend_none() { gl::Disable(GL_BLEND); }
+
+// Blender's ALPHA_PREMULT and ADDITIVE_PREMULT blend states.
+void blend_alpha_premult() {
+    gl::Enable(GL_BLEND);
+    gl::BlendEquation(GL_FUNC_ADD);
+    gl::BlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+}
+
+void blend_additive_premult() {
+    gl::Enable(GL_BLEND);
+    gl::BlendEquation(GL_FUNC_ADD);
+    gl::BlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+    Program surface, edge, composite;
+    glm::vec4 table_params{0.0f};
+    std::unique_ptr<Texture> table = highlight_table(table_params);
+    Texture dummy{1, 1, GL_RGBA32F};  // the toon samplers: mode 0 never reads them
+    UniformBuffer ubo;
+    std::vector<float> fullscreen = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
+    VertexArray fullscreen_vao{composite, {{"pos", &fullscreen, 2}}};
+
+    explicit Impl(const std::string& dir)
+        : surface(assemble_program(dir, "surface")),
+          edge(assemble_program(dir, "edge_highlight")),
+          composite(assemble_program(dir, "composite")) {}
+
+    void shading(const Program& p, const Material& m) const {
+        p.set("model", glm::mat4(1.0f));
+        p.set("base_color", glm::vec4(m.base_color, m.alpha));
+        p.set("spec_color", glm::vec4(m.spec_color, m.shininess));
+    }
+};
+
+Renderer::Renderer(const std::string& shader_dir) : impl_(std::make_unique<Impl>(shader_dir)) {
+    gl::ProvokingVertex(kProvokingGl);
+    gl::check("creating the renderer");
+}
+
+Renderer::~Renderer() = default;
+
+Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
+    Impl& r = *impl_;
+    const int w = camera.width, h = camera.height;
+    Texture surface_color(w, h, GL_RGBA32F), surface_depth(w, h, GL_R32F), depth(w, h, GL_DEPTH_COMPONENT32F),
+        highlight(w, h, GL_RGBA32F), lines(w, h, GL_RGBA32F), result(w, h, GL_RGBA32F);
+    Framebuffer surface_fb({&surface_color, &surface_depth}, &depth), highlight_fb({&highlight}),
+        line_fb({&lines}), result_fb({&result});
+    VertexArray surface_vao(r.surface, {{"pos", &scene.surface.pos, 3}, {"nor", &scene.surface.nor, 3}});
+    const EdgeQuads q = edge_quads(scene.edges, scene.material.radius, kProvoking);
+    VertexArray edge_vao(r.edge, {{"p0", &q.p0, 3}, {"p1", &q.p1, 3}, {"n1", &q.n1, 3}, {"n2", &q.n2, 3},
+                                  {"corner", &q.corner, 4}},
+                         &q.indices);
+    const Material& m = scene.material;
+    gl::Disable(GL_CULL_FACE);  // Blender shows both sides; the surface shader flips back faces
+
+    samples = std::max(samples, 1);
+    result_fb.clear_color(0, glm::vec4(0.0f));
+    line_fb.clear_color(0, glm::vec4(0.0f));  // no ink lines here: the composite reads a clear layer
+    for (int s = 0; s < samples; ++s) {
+        const glm::dmat4 proj = jittered_projection(camera.projection(), w, h, jitter(s));
+        r.ubo.upload(frame_data(camera, proj, scene.suns, scene.ambient));
+
+        // Surface: colour and 1 / view depth, depth-tested.
+        surface_fb.clear_color(0, glm::vec4(0.0f));
+        surface_fb.clear_color(1, glm::vec4(0.0f));
+        surface_fb.clear_depth(1.0f);
+        surface_fb.bind();
+        gl::Enable(GL_DEPTH_TEST);
+        gl::DepthFunc(GL_LEQUAL);
+        gl::DepthMask(GL_TRUE);
+        blend_none();
+        r.surface.use();
+        r.surface.uniform_buf("frame", r.ubo.id());
+        r.shading(r.surface, m);
+        r.surface.set("toon", glm::vec4(0.0f));  // mode 0: Blinn-Phong
+        r.surface.texture("toon_ramp", r.dummy);
+        r.surface.texture("toon_map", r.dummy);
+        surface_vao.draw_triangles();
+        gl::Disable(GL_DEPTH_TEST);
+        gl::DepthMask(GL_FALSE);
+        gl::check("the surface pass");
+
+        // Edge highlights once, on the unjittered sample: their coverage is box-filtered
+        // analytically across the band (docs/addon.md), later samples reuse them.
+        if (s == 0) {
+            highlight_fb.clear_color(0, glm::vec4(0.0f));
+            highlight_fb.bind();
+            blend_alpha_premult();
+            r.edge.use();
+            r.edge.uniform_buf("frame", r.ubo.id());
+            r.edge.texture("cos_power_table", *r.table);
+            r.edge.texture("surface_depth", surface_depth);
+            r.edge.set("table_params", r.table_params);
+            r.shading(r.edge, m);
+            r.edge.set("tint", glm::vec4(m.tint, m.K));
+            edge_vao.draw_triangles();
+            blend_none();
+            gl::check("the edge highlight pass");
+        }
+
+        result_fb.bind();
+        blend_additive_premult();
+        r.composite.use();
+        r.composite.texture("surface_color", surface_color);
+        r.composite.texture("highlight_color", highlight);
+        r.composite.texture("line_color", lines);
+        r.composite.set("background", glm::vec4(glm::vec3(scene.ambient), 1.0f));  // an opaque world
+        r.composite.set("weight", 1.0f / float(samples));
+        r.fullscreen_vao.draw_triangles();
+        blend_none();
+        gl::check("the composite pass");
+    }
+    gl::Finish();
+    Images out;
+    out.width = w;
+    out.height = h;
+    out.result = result_fb.read(0, 4);
+    out.surface = surface_fb.read(0, 4);
+    out.inv_depth = surface_fb.read(1, 1);
+    out.highlight = highlight_fb.read(0, 4);
+    return out;
+}
+
+}  // namespace el_tools

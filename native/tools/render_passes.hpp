@@ -1,0 +1,59 @@
+// The add-on's frame (addon/passes/frame.py) in plain OpenGL: per jittered sample a surface
+// pass, on the first sample the edge highlight pass into a premultiplied target, and a composite
+// added into the result with weight 1 / samples. Needs a current GL 4.5 core context
+// (OsmesaContext).
+#pragma once
+
+#include "gl_objects.hpp"
+#include "mesh_batches.hpp"
+#include "render_camera.hpp"
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace el_tools {
+
+// One material, as addon/materials.py's Shading: Blinn-Phong surface, rounded edges.
+struct Material {
+    glm::vec3 base_color{0.8f};
+    float alpha = 1.0f;
+    glm::vec3 spec_color{0.04f};  // F0 (0.08 x Principled's default specular 0.5)
+    float shininess = 30.0f;      // Blinn exponent (roughness 0.5)
+    glm::vec3 tint{1.0f};
+    float K = 1.0f;
+    float radius = 0.01f;         // r_e, world units
+};
+
+struct Scene {
+    SurfaceCorners surface;
+    EdgeSet edges;
+    Material material;
+    std::vector<Sun> suns;
+    glm::dvec3 ambient{0.05, 0.05, 0.06};  // world colour of the sample scenes
+};
+
+// Float buffers read back after the last sample, rows bottom-up (GL order).
+struct Images {
+    int width = 0, height = 0;
+    std::vector<float> result;     // RGBA, scene-linear
+    std::vector<float> surface;    // RGBA of the last sample
+    std::vector<float> highlight;  // RGBA premultiplied (W Is, W), first (unjittered) sample
+    std::vector<float> inv_depth;  // 1 / view depth of the last sample, 0 = empty
+};
+
+class Renderer {
+public:
+    // Compiles surface, edge_highlight and composite from `shader_dir` (programs.json).
+    explicit Renderer(const std::string& shader_dir);
+    ~Renderer();
+    Images render(const Scene& scene, const Camera& camera, int samples);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace el_tools

@@ -1,0 +1,46 @@
+// GLSL sources of one EdgeLight program for a plain OpenGL 4.5 core context, assembled from
+// shaders/programs.json and the same body files the add-on hands to Blender's
+// GPUShaderCreateInfo (addon/passes/shader_lib.py): one source of truth for both hosts.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace el_tools {
+
+// The interface of a program as programs.json states it, in declaration order (the order gives
+// the slots: vertex attribute locations, sampler texture units, fragment output locations).
+struct ProgramInterface {
+    struct Var {
+        std::string type;  // programs.json's type name: "VEC3", "MAT4", "FLOAT_2D", ...
+        std::string name;
+    };
+    struct Block {
+        int binding = 0;
+        std::string type_name;  // the struct declared by a typedef file ("FrameData")
+        std::string name;       // the variable the bodies use ("frame")
+    };
+    std::vector<Block> uniform_bufs;
+    std::vector<Var> push_constants, vertex_in, samplers, fragment_out;
+};
+
+struct AssembledProgram {
+    std::string name;
+    ProgramInterface iface;
+    std::string vertex;    // complete sources, #version line first
+    std::string fragment;
+};
+
+// The GLSL version the preamble declares. 4.30 is what Blender's GL backend asks for on Mesa;
+// the bodies need 4.00 at least (frexp, ldexp, fma in highlight_arc.glsl) and the preamble uses
+// 4.20's layout(binding = ...) for samplers and uniform blocks.
+inline constexpr const char* kGlslVersion = "#version 430 core";
+
+// Reads `shader_dir`/programs.json and the program's files. Throws std::runtime_error naming the
+// program, file or type that is missing or unknown.
+AssembledProgram assemble_program(const std::string& shader_dir, const std::string& program);
+
+// Every program name in programs.json (keys not starting with '_').
+std::vector<std::string> program_names(const std::string& shader_dir);
+
+}  // namespace el_tools
