@@ -5,8 +5,9 @@
 
 Scenes: the three samples, and generated scenes of 100k and 1M triangles (grids of cubes, every
 cube edge rounded). Modes: 'orbit' turns the view 1 degree before every draw (a new image each
-time), with highlights off (surface only) and on; 'static' redraws an unchanged view (the cached
-image). Times come from bpy.ops.wm.redraw_timer, best of REPEAT runs.
+time), with highlights off (surface only), on, and off with ink lines (silhouettes, creases
+above 45 degrees, borders: a native view update and new silhouette batches per draw); 'static'
+redraws an unchanged view (the cached image). Times come from bpy.ops.wm.redraw_timer, best of REPEAT runs.
 """
 import math
 import os
@@ -93,9 +94,12 @@ def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
     scene = bpy.context.scene
     scene.edgelight.viewport_samples = 1
     result = {}
-    for label, highlights, orbit in (("surface only, orbit", False, True), ("surface + highlights, orbit", True, True),
-                                     ("static redraw (cache hit)", True, False)):
+    for label, highlights, lines, orbit in (("surface only, orbit", False, False, True),
+                                            ("surface + lines, orbit", False, True, True),
+                                            ("surface + highlights, orbit", True, False, True),
+                                            ("static redraw (cache hit)", True, False, False)):
         scene.edgelight.highlights = highlights
+        scene.edgelight.use_lines = lines
         draw_ms(True, 1, 1)  # warm up: extraction, batches, shaders
         result[label] = draw_ms(orbit, frames, repeat)
     import edgelight
@@ -106,7 +110,7 @@ def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
 
 
 def steps():
-    for name in ("cube", "fandisk", "prop"):
+    for name in ("cube", "fandisk", "prop", "toon"):
         bpy.ops.wm.open_mainfile(filepath=os.path.join(ROOT, "blend_samples", name + ".blend"))
         yield
         measure(name)
@@ -118,11 +122,13 @@ def steps():
     _, _, region = view3d()
     lines = [f"Blender {bpy.app.version_string}, 3D view {region.width}x{region.height} px, Rendered shading, "
              f"1 viewport sample; ms per view_draw, best of {REPEAT} runs of {FRAMES} draws (the 1M scene: one run of 3).", "",
-             "| scene | triangles | edges drawn / culled | surface only, orbit | surface + highlights, orbit | static redraw | highlights add | static / surface only |",
-             "|---|---|---|---|---|---|---|---|"]
+             "| scene | triangles | edges drawn / culled | surface only, orbit | surface + lines, orbit | surface + highlights, orbit | static redraw | lines add | highlights add | static / surface only |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for name, tris, drawn, culled, r in rows:
-        s, h, st = r["surface only, orbit"], r["surface + highlights, orbit"], r["static redraw (cache hit)"]
-        lines.append(f"| {name} | {tris:,} | {drawn:,} / {culled:,} | {s:.1f} | {h:.1f} | {st:.1f} | {100 * (h / s - 1):.0f}% | {st / s:.2f} |")
+        s, ln, h, st = (r["surface only, orbit"], r["surface + lines, orbit"], r["surface + highlights, orbit"],
+                        r["static redraw (cache hit)"])
+        lines.append(f"| {name} | {tris:,} | {drawn:,} / {culled:,} | {s:.1f} | {ln:.1f} | {h:.1f} | {st:.1f} | "
+                     f"{100 * (ln / s - 1):.0f}% | {100 * (h / s - 1):.0f}% | {st / s:.2f} |")
     os.makedirs(os.path.dirname(OUT), exist_ok=True)
     with open(OUT, "w") as f:
         f.write("\n".join(lines) + "\n")
