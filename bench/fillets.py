@@ -19,13 +19,19 @@ def add_fillets(s, radius, segments):
         bm.free()
         picked = [a > threshold for a in angles]
         a_max = max(a for a, p in zip(angles, picked) if p)
-        if hasattr(me, "use_customdata_edge_bevel"):
-            me.use_customdata_edge_bevel = True
-        for e, a, p in zip(me.edges, angles, picked):
-            e.bevel_weight = math.tan(0.5 * a) / math.tan(0.5 * a_max) if p else 0.0
+        weights = [math.tan(0.5 * a) / math.tan(0.5 * a_max) if p else 0.0 for a, p in zip(angles, picked)]
+        if hasattr(me.edges[0], "bevel_weight"):  # 3.x; 4.0+ keeps it in an edge attribute
+            if hasattr(me, "use_customdata_edge_bevel"):
+                me.use_customdata_edge_bevel = True
+            for e, w in zip(me.edges, weights):
+                e.bevel_weight = w
+        else:
+            attr = me.attributes.get("bevel_weight_edge") or me.attributes.new("bevel_weight_edge", 'FLOAT', 'EDGE')
+            attr.data.foreach_set("value", weights)
         for poly in me.polygons:
             poly.use_smooth = True
-        me.use_auto_smooth = True  # hardened normals are custom normals; the faces stay flat by angle
+        if hasattr(me, "use_auto_smooth"):  # before 4.1: custom (hardened) normals need it
+            me.use_auto_smooth = True
         mod = ob.modifiers.new("Fillet", 'BEVEL')
         mod.offset_type = 'OFFSET'
         mod.width = radius * math.tan(0.5 * a_max)

@@ -42,11 +42,12 @@ void main()
     discard;
   }
 
-  /* Band of projected width w (pixels) centred on the edge line, the pixel's box-filtered
-   * coverage of it, and the whole visible arc's mean colour: exact while w <= 1 (the paper's
-   * assumption), and the method of every pixel until issue 6. */
+  /* The methods before issue 6 (a benchmark and test switch, edge_band.glsl): a band of
+   * projected width w (pixels) centred on the edge line, the pixel's box-filtered coverage of it,
+   * and the whole visible arc's mean colour. It is exact only if the band were centred and fell
+   * within one pixel; measured against fillets it is off already at a pixel (BENCHMARKS.md). */
   float w_px = edge_radius * width / world_per_px;
-  float t_wide = method == EL_METHOD_PARTIAL ? clamp(w_px - 1.0, 0.0, 1.0) : (method == EL_METHOD_QUADRATURE ? 1.0 : 0.0);
+  float t_wide = (method == EL_METHOD_PARTIAL || method == EL_METHOD_QUADRATURE) ? 1.0 : 0.0;
   float ramp = el_axial_ramp(s);
   vec4 result = vec4(0.0);
   if (t_wide < 1.0) {
@@ -65,9 +66,10 @@ void main()
       result = vec4(col * W, W);
     }
   }
-  /* Wider bands (docs/highlight_math.md, section 15): the band where the fillet's image really
-   * lies, and each pixel shaded with the part of the arc whose image it covers. Between 1 and 2
-   * pixels the two are blended, so nothing jumps as an edge widens. */
+  /* EdgeLight's method (docs/highlight_math.md, section 15), at every width: the band where the
+   * fillet's image really lies, and each pixel shaded with the part of the arc whose image it
+   * covers. A short edge's vertex-shaded colour is not used here: each pixel needs its own part
+   * of the arc (about +8% on a dense 100k-edge render, for 2-3x less error at 1 px). */
   if (t_wide > 0.0) {
     if (per_edge) {
       g = el_arc(edge_dir, edge_n1, edge_n2, V);

@@ -64,7 +64,9 @@ void main()
    * which provides both triangles' flat outputs (passes/batches.py). */
   edge_color = vec4(0.0);
   edge_arc = vec2(0.0);
-  if (len < EL_SHADE_PER_EDGE_BELOW_PX && corner.w > 0.5) {
+  /* Only the methods that use one colour per edge need it (edge_band.glsl). */
+  bool whole_arc = el_method() == EL_METHOD_WHOLE || el_method() == EL_METHOD_PAPER;
+  if (whole_arc && len < EL_SHADE_PER_EDGE_BELOW_PX && corner.w > 0.5) {
     vec3 Vu = el_safe_normalize(Vm);
     ElArc g = el_arc(edge_dir, edge_n1, edge_n2, Vu);
     edge_color = vec4(el_edge_colour(g, mid, Vu, edge_dir), 1.0);

@@ -19,7 +19,7 @@ void check(el_status s) {
 }
 
 // The library's recommended F(phi, m) table as an R32F texture, with the shader's
-// table_params = (layout, m_max, warp_c, unused), as addon/passes/table.py uploads it.
+// table_params = (layout, m_max, warp_c, edge method), as addon/passes/frame.py sets it.
 std::unique_ptr<Texture> highlight_table(glm::vec4& params) {
     const el_table_desc desc = EL_TABLE_DEFAULT_DESC;
     el_highlight_table* t = nullptr;
@@ -130,7 +130,7 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
             r.edge.uniform_buf("frame", r.ubo.id());
             r.edge.texture("cos_power_table", *r.table);
             r.edge.texture("surface_depth", surface_depth);
-            r.edge.set("table_params", r.table_params);
+            r.edge.set("table_params", glm::vec4(glm::vec3(r.table_params), float(scene.edge_method)));
             r.shading(r.edge, m);
             r.edge.set("tint", glm::vec4(m.tint, m.K));
             edge_vao.draw_triangles();

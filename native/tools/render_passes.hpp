@@ -33,6 +33,10 @@ struct Scene {
     Material material;
     std::vector<Sun> suns;
     glm::dvec3 ambient{0.05, 0.05, 0.06};  // world colour of the sample scenes
+    // How the edge pass shades bands (shaders/edge_band.glsl): 0 per-pixel part of the arc (the
+    // add-on's), 1 the whole visible arc's mean everywhere (what el_highlight_reference computes
+    // for one point), 2 the paper's 1-pixel line, 3 as 0 by brute-force quadrature.
+    int edge_method = 0;
 };
 
 // Float buffers read back after the last sample, rows bottom-up (GL order).

@@ -41,6 +41,10 @@ CubeScene cube(int width, int height, float radius) {
     const auto mesh = el_tools::load_mesh(std::string(EDGELIGHT_TEST_MESH_DIR) + "/cube.off");
     s.scene.surface = el_tools::surface_corners(mesh, 30.0f);
     s.scene.edges = el_tools::choose_edges(mesh, 30.0f);
+    // el_highlight_reference integrates the whole visible arc at one point, as the edge pass's
+    // "whole" method does for every pixel of the band (per-pixel parts of the arc are checked
+    // against the bevel ground truth in tests/blender/test_wide_edges.py).
+    s.scene.edge_method = 1;
     s.camera.eye = dvec3(5.2, -4.4, 3.6);
     s.camera.target = dvec3(0.0);
     s.camera.width = width;
