@@ -40,4 +40,8 @@ def add_fillets(s, radius, segments):
         mod.limit_method = 'WEIGHT'
         mod.harden_normals = True
         mod.miter_outer = 'MITER_ARC'
+        # Bevel stops a fillet where it would overlap its neighbours; on a dense mesh (fandisk's
+        # creases are chains of short edges between thin triangles) that cut every fillet short of
+        # r at a pixel or two, and the reference stopped being rounded at all.
+        mod.use_clamp_overlap = False
     s.edgelight.highlights = False  # the fillets are the rounding: the same surface shading only
