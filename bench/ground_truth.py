@@ -58,8 +58,49 @@ METHODS = [
 ]
 
 
+def off_mesh(name):
+    """(vertices, faces) of libcgal-demo's data/meshes/NAME.off (from EDGELIGHT_MESH_DIR or the
+    Debian package's data.tar.gz)."""
+    import tarfile
+    path = os.path.join(os.environ.get("EDGELIGHT_MESH_DIR", os.path.join(ROOT, "build", "meshes")), name + ".off")
+    if os.path.exists(path):
+        text = open(path).read()
+    else:
+        with tarfile.open("/usr/share/doc/libcgal-dev/data.tar.gz") as tar:
+            text = tar.extractfile(f"data/meshes/{name}.off").read().decode()
+    words = [w for line in text.splitlines() for w in line.split("#")[0].split()]
+    nv, nf = int(words[1]), int(words[2])
+    vals = words[4:]
+    verts = np.array(vals[:3 * nv], float).reshape(nv, 3)
+    faces, k = [], 3 * nv
+    for _ in range(nf):
+        n = int(vals[k])
+        faces.append([int(v) for v in vals[k + 1:k + 1 + n]])
+        k += 1 + n
+    return verts, faces
+
+
 def open_scene(name, radius, samples):
-    bpy.ops.wm.open_mainfile(filepath=os.path.join(ROOT, "blend_samples", name + ".blend"))
+    """A sample scene, or (for any other name) libcgal-demo's NAME.off in the fandisk sample's
+    place: its camera, sun and material, the mesh scaled into fandisk's bounding box."""
+    sample = os.path.join(ROOT, "blend_samples", name + ".blend")
+    bpy.ops.wm.open_mainfile(filepath=sample if os.path.exists(sample) else
+                             os.path.join(ROOT, "blend_samples", "fandisk.blend"))
+    if not os.path.exists(sample):
+        ob = bpy.data.objects["Fandisk"]
+        old = np.array([v.co[:] for v in ob.data.vertices])
+        verts, faces = off_mesh(name)
+        lo, hi = verts.min(0), verts.max(0)
+        scale = np.ptp(old, 0).max() / np.ptp(verts, 0).max()
+        verts = (verts - 0.5 * (lo + hi)) * scale + 0.5 * (old.min(0) + old.max(0))
+        me = bpy.data.meshes.new(name)
+        me.from_pydata(verts.tolist(), [], faces)
+        me.update()
+        for p in me.polygons:
+            p.use_smooth = True
+        for mat in ob.data.materials:
+            me.materials.append(mat)
+        ob.data = me
     s = bpy.context.scene
     s.render.engine = "EDGELIGHT"
     s.render.resolution_x, s.render.resolution_y = RESOLUTION

@@ -1,16 +1,22 @@
 /* Where a rounded edge's band lies across its projected edge line, and which part of its arc
  * one pixel sees (docs/highlight_math.md, section 15). Needs highlight_arc.glsl.
  *
- * Methods (table_params.w; passes/frame.py reads EDGELIGHT_EDGE_METHOD): a debug and benchmark
- * switch, so the ground-truth benchmark can render the earlier methods with the same shaders. */
+ * Methods (EL_EDGE_METHOD, defined when the program is built; passes/frame.py reads
+ * EDGELIGHT_EDGE_METHOD): a debug and benchmark switch, so the ground-truth benchmark can render
+ * the earlier methods with the same shaders. A compile-time constant, not a uniform: llvmpipe
+ * would run every method's code in every fragment, masked (it doubled the pass). */
 #define EL_METHOD_PARTIAL 0    /* default: true band position, each pixel its own part of the arc */
 #define EL_METHOD_WHOLE 1      /* until issue 6: band centred on the line, whole-arc mean everywhere */
 #define EL_METHOD_PAPER 2      /* seed 000: a 1-pixel line, W = K r |P.(N1 - N2)| / d, whole-arc mean */
 #define EL_METHOD_QUADRATURE 3 /* as PARTIAL, the kernel by brute-force quadrature (no table) */
 
+#ifndef EL_EDGE_METHOD
+#define EL_EDGE_METHOD EL_METHOD_PARTIAL
+#endif
+
 int el_method()
 {
-  return int(table_params.w + 0.5);
+  return EL_EDGE_METHOD;
 }
 
 /* Arc normal at angle u from N1. */

@@ -1,7 +1,13 @@
 /* The rounded-edge integral of one pixel (docs/highlight_math.md): the float path of
  * native/src/highlight_arc.cpp and the table lookup of highlight_table.cpp, step for step, so
  * the native tests of that code speak for this shader. Needs the sampler cos_power_table and the
- * push constant table_params = (layout, m_max, warp_c, edge method: edge_band.glsl). */
+ * push constant table_params = (layout, m_max, warp_c, unused). The layout is also fixed when the
+ * program is built (EL_TABLE_LAYOUT: passes/frame.py defines it from the uploaded table): llvmpipe
+ * runs fragments as SIMD lanes with masks and pays for both sides of a branch on a uniform, so the
+ * lookup code of the other layouts must not be in the program at all. */
+#ifndef EL_TABLE_LAYOUT
+#define EL_TABLE_LAYOUT 2 /* EL_TABLE_BICUBIC, the library's default */
+#endif
 #define EL_PI 3.14159265358979
 #define EL_HALF_PI 1.57079632679490
 #define EL_ANTIPARALLEL_BAND 1e-6
@@ -107,26 +113,26 @@ float el_bicubic_phi_end(float m, float c)
 }
 
 /* Table row for exponent m: (first row of the stencil, y minus it, texel per radian, output
- * scale). table_params.x is the layout: 0 paper, 1 warped, 2 bicubic. */
+ * scale). EL_TABLE_LAYOUT: 0 paper, 1 warped, 2 bicubic. */
 vec4 el_table_row(float m)
 {
   ivec2 size = textureSize(cos_power_table, 0);
   float last_row = float(size.y - 1);
   float y, phi_to_texel, out_scale;
-  if (table_params.x < 0.5) { /* EL_TABLE_PAPER */
+  if (EL_TABLE_LAYOUT == 0) { /* EL_TABLE_PAPER */
     y = m - 1.0;
     phi_to_texel = float(size.x - 1) / 1.57079632679;
     out_scale = 1.0;
   }
   else {
     y = log(m) / log(table_params.y) * last_row;
-    float phi_end = table_params.x > 1.5 ? min(1.57079632679, el_bicubic_phi_end(m, table_params.z)) :
+    float phi_end = EL_TABLE_LAYOUT == 2 ? min(1.57079632679, el_bicubic_phi_end(m, table_params.z)) :
                                            min(1.57079632679, table_params.z / sqrt(m));
     phi_to_texel = float(size.x - 1) / phi_end;
     out_scale = 1.0 / sqrt(m);
   }
   y = clamp(y, 0.0, last_row);
-  float j = table_params.x > 1.5 ? clamp(floor(y) - 1.0, 0.0, last_row - 3.0) : min(floor(y), last_row - 1.0);
+  float j = EL_TABLE_LAYOUT == 2 ? clamp(floor(y) - 1.0, 0.0, last_row - 3.0) : min(floor(y), last_row - 1.0);
   return vec4(j, y - j, phi_to_texel, out_scale);
 }
 
@@ -153,7 +159,7 @@ float el_table_lookup(vec4 row, float phi)
 {
   float last = float(textureSize(cos_power_table, 0).x - 1);
   float x = min(abs(phi) * row.z, last);
-  if (table_params.x > 1.5) {
+  if (EL_TABLE_LAYOUT == 2) {
     return sign(phi) * el_table_lookup_bicubic(row, x, last) * row.w;
   }
   float i = min(floor(x), last - 1.0);

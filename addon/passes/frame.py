@@ -163,7 +163,8 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False):
 
 def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
     tex, params = table.table()
-    shader = shader_lib.get("edge_highlight")
+    # The table layout and the edge method are fixed in the program (highlight_arc.glsl).
+    shader = shader_lib.get("edge_highlight", {"EL_TABLE_LAYOUT": int(params[0]), "EL_EDGE_METHOD": int(edge_method())})
     with targets.highlight_fb.bind():
         targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
         gpu.state.blend_set('ALPHA_PREMULT')
@@ -171,7 +172,7 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
         shader.uniform_block("frame", ubo)
         shader.uniform_sampler("cos_power_table", tex)
         shader.uniform_sampler("surface_depth", targets.surface_depth)
-        shader.uniform_float("table_params", (*params[:3], edge_method()))
+        shader.uniform_float("table_params", (*params[:3], 0.0))
         for inst in scene.instances:
             gm = gpu_meshes[id(inst.mesh)]
             if not gm.edges:

@@ -30,16 +30,21 @@ def program_description(name):
         return json.load(f)[name]
 
 
-def get(name):
-    """The compiled program `name`, built on first use."""
-    shader = _cache.get(name)
+def get(name, defines=None):
+    """The compiled program `name`, built on first use; `defines` ({NAME: value}) fix choices
+    at build time (a variant per set), where a uniform branch would cost every fragment both
+    sides on llvmpipe."""
+    key = (name, tuple(sorted((defines or {}).items())))
+    shader = _cache.get(key)
     if shader is None:
-        shader = _cache[name] = _build(name, program_description(name))
+        shader = _cache[key] = _build(name, program_description(name), defines or {})
     return shader
 
 
-def _build(name, d):
+def _build(name, d, defines):
     info = gpu.types.GPUShaderCreateInfo()
+    for define, value in sorted(defines.items()):
+        info.define(define, str(value))
     if d["typedefs"]:
         info.typedef_source("\n".join(_read(f) for f in d["typedefs"]))
     for slot, type_name, var in d["uniform_bufs"]:

@@ -3,6 +3,8 @@
 #include <edgelight/edgelight.h>
 
 #include <algorithm>
+#include <map>
+#include <memory>
 #include <stdexcept>
 
 namespace el_tools {
@@ -19,7 +21,7 @@ void check(el_status s) {
 }
 
 // The library's recommended F(phi, m) table as an R32F texture, with the shader's
-// table_params = (layout, m_max, warp_c, edge method), as addon/passes/frame.py sets it.
+// table_params = (layout, m_max, warp_c, unused), as addon/passes/frame.py sets it.
 std::unique_ptr<Texture> highlight_table(glm::vec4& params) {
     const el_table_desc desc = EL_TABLE_DEFAULT_DESC;
     el_highlight_table* t = nullptr;
@@ -51,7 +53,9 @@ void blend_additive_premult() {
 }  // namespace
 
 struct Renderer::Impl {
-    Program surface, edge, composite;
+    std::string dir;
+    Program surface, composite;
+    std::map<int, std::unique_ptr<Program>> edge_programs;  // per edge method
     glm::vec4 table_params{0.0f};
     std::unique_ptr<Texture> table = highlight_table(table_params);
     Texture dummy{1, 1, GL_RGBA32F};  // the toon samplers: mode 0 never reads them
@@ -59,10 +63,20 @@ struct Renderer::Impl {
     std::vector<float> fullscreen = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
     VertexArray fullscreen_vao{composite, {{"pos", &fullscreen, 2}}};
 
-    explicit Impl(const std::string& dir)
-        : surface(assemble_program(dir, "surface")),
-          edge(assemble_program(dir, "edge_highlight")),
-          composite(assemble_program(dir, "composite")) {}
+    explicit Impl(const std::string& shader_dir)
+        : dir(shader_dir), surface(assemble_program(dir, "surface")), composite(assemble_program(dir, "composite")) {}
+
+    // The edge program of one method, with the table layout fixed as the add-on fixes it
+    // (passes/frame.py: a define, not a uniform).
+    const Program& edge(int method) {
+        auto& p = edge_programs[method];
+        if (!p) {
+            p = std::make_unique<Program>(assemble_program(
+                dir, "edge_highlight",
+                {{"EL_TABLE_LAYOUT", std::to_string(int(table_params.x))}, {"EL_EDGE_METHOD", std::to_string(method)}}));
+        }
+        return *p;
+    }
 
     void shading(const Program& p, const Material& m) const {
         p.set("model", glm::mat4(1.0f));
@@ -87,7 +101,8 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
         line_fb({&lines}), result_fb({&result});
     VertexArray surface_vao(r.surface, {{"pos", &scene.surface.pos, 3}, {"nor", &scene.surface.nor, 3}});
     const EdgeQuads q = edge_quads(scene.edges, scene.material.radius, kProvoking);
-    VertexArray edge_vao(r.edge, {{"p0", &q.p0, 3}, {"p1", &q.p1, 3}, {"n1", &q.n1, 3}, {"n2", &q.n2, 3},
+    const Program& edge = r.edge(scene.edge_method);
+    VertexArray edge_vao(edge, {{"p0", &q.p0, 3}, {"p1", &q.p1, 3}, {"n1", &q.n1, 3}, {"n2", &q.n2, 3},
                                   {"corner", &q.corner, 4}},
                          &q.indices);
     const Material& m = scene.material;
@@ -126,13 +141,13 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
             highlight_fb.clear_color(0, glm::vec4(0.0f));
             highlight_fb.bind();
             blend_alpha_premult();
-            r.edge.use();
-            r.edge.uniform_buf("frame", r.ubo.id());
-            r.edge.texture("cos_power_table", *r.table);
-            r.edge.texture("surface_depth", surface_depth);
-            r.edge.set("table_params", glm::vec4(glm::vec3(r.table_params), float(scene.edge_method)));
-            r.shading(r.edge, m);
-            r.edge.set("tint", glm::vec4(m.tint, m.K));
+            edge.use();
+            edge.uniform_buf("frame", r.ubo.id());
+            edge.texture("cos_power_table", *r.table);
+            edge.texture("surface_depth", surface_depth);
+            edge.set("table_params", r.table_params);
+            r.shading(edge, m);
+            edge.set("tint", glm::vec4(m.tint, m.K));
             edge_vao.draw_triangles();
             blend_none();
             gl::check("the edge highlight pass");

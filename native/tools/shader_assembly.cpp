@@ -117,7 +117,8 @@ std::vector<std::string> program_names(const std::string& shader_dir) {
     return names;
 }
 
-AssembledProgram assemble_program(const std::string& shader_dir, const std::string& program) {
+AssembledProgram assemble_program(const std::string& shader_dir, const std::string& program,
+                                  const std::vector<std::pair<std::string, std::string>>& defines) {
     const json all = read_programs(shader_dir);
     if (!all.contains(program)) throw std::runtime_error("programs.json has no program '" + program + "'");
     const json& d = all.at(program);
@@ -132,8 +133,10 @@ AssembledProgram assemble_program(const std::string& shader_dir, const std::stri
         p.iface.samplers = vars(list_of(d, "samplers"));
         p.iface.fragment_out = vars(list_of(d, "fragment_out"));
 
-        const std::string head = std::string(kGlslVersion) + "\n/* EdgeLight program '" + program +
-                                 "': declarations generated from shaders/programs.json */\n" +
+        std::string define_lines;
+        for (const auto& [name, value] : defines) define_lines += "#define " + name + " " + value + "\n";
+        const std::string head = std::string(kGlslVersion) + "\n" + define_lines + "/* EdgeLight program '" +
+                                 program + "': declarations generated from shaders/programs.json */\n" +
                                  resources(shader_dir, d, p.iface, program);
         std::ostringstream v;
         v << head;

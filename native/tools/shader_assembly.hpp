@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace el_tools {
@@ -36,9 +37,12 @@ struct AssembledProgram {
 // 4.20's layout(binding = ...) for samplers and uniform blocks.
 inline constexpr const char* kGlslVersion = "#version 430 core";
 
-// Reads `shader_dir`/programs.json and the program's files. Throws std::runtime_error naming the
-// program, file or type that is missing or unknown.
-AssembledProgram assemble_program(const std::string& shader_dir, const std::string& program);
+// Reads `shader_dir`/programs.json and the program's files. `defines` become #define lines after
+// the version, as GPUShaderCreateInfo.define() does in the add-on (EL_TABLE_LAYOUT,
+// EL_EDGE_METHOD: shaders/highlight_arc.glsl, edge_band.glsl). Throws std::runtime_error naming
+// the program, file or type that is missing or unknown.
+AssembledProgram assemble_program(const std::string& shader_dir, const std::string& program,
+                                  const std::vector<std::pair<std::string, std::string>>& defines = {});
 
 // Every program name in programs.json (keys not starting with '_').
 std::vector<std::string> program_names(const std::string& shader_dir);
