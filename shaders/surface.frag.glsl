@@ -1,12 +1,17 @@
 /* Surface pass: Blinn-Phong from the material, ambient from the world, or toon shading
- * (toon.glsl), or unlit white (whiteout, toon.x = 3); writes colour and the inverse view-space
- * depth the edge and line passes test against. */
+ * (toon.glsl), or unlit white (whiteout); writes colour and the inverse view-space depth the edge
+ * and line passes test against. The mode is fixed when the program is built (EL_SURFACE_MODE:
+ * 0 Blinn-Phong, 1 ramp, 2 X-Toon, 3 whiteout; passes/frame.py builds one per mode in use), so
+ * the other modes' code is not in it. */
+#ifndef EL_SURFACE_MODE
+#define EL_SURFACE_MODE 0
+#endif
 void main()
 {
   out_depth = 1.0 / max(view_depth, 1e-30); /* 0 where nothing was drawn: infinitely far */
-  int mode = int(toon.x + 0.5);
+  const int mode = EL_SURFACE_MODE;
   if (mode == 3) {
-    out_color = vec4(1.0);
+    out_color = vec4(1.0, 1.0, 1.0, base_color.a); /* a transparent material stays transparent */
     return;
   }
   vec3 N = normalize(world_nor);

@@ -127,35 +127,53 @@ class Stats:
     lines_drawn: int = 0
 
 
-def _shading_uniforms(shader, s):
+def _shading_uniforms(shader, s, specular=True):
     shader.uniform_float("base_color", (*s.base_color, s.alpha))
-    shader.uniform_float("spec_color", (*s.spec_color, s.shininess))
+    if specular:  # toon and whiteout surfaces have none (their programs drop spec_color)
+        shader.uniform_float("spec_color", (*s.spec_color, s.shininess))
 
 
-def _toon_uniforms(shader, s, whiteout):
+def _surface_mode(s, whiteout):
+    """The surface program's shading (toon.glsl): 0 Blinn-Phong, 1 ramp, 2 X-Toon, 3 whiteout."""
+    return 3 if whiteout else int(s.toon.mode)
+
+
+def _toon_uniforms(shader, s, mode):
+    """Only what the mode's program reads: the compiler drops the rest, and setting a uniform
+    it dropped is an error."""
+    if mode not in (1, 2):
+        return
     t = s.toon
-    mode = 3.0 if whiteout else float(t.mode)
-    shader.uniform_float("toon", (mode, t.near, t.far, (1.0 if t.smooth else 0.0) + (2.0 if t.orientation else 0.0)))
-    shader.uniform_sampler("toon_ramp", toon.ramp_texture(t) if mode == 1.0 else toon.dummy())
-    shader.uniform_sampler("toon_map", toon.map_texture(t, s.base_color) if mode == 2.0 else toon.dummy())
+    shader.uniform_float("toon", (float(mode), t.near, t.far, (1.0 if t.smooth else 0.0) + (2.0 if t.orientation else 0.0)))
+    if mode == 1:
+        shader.uniform_sampler("toon_ramp", toon.ramp_texture(t))
+    else:
+        shader.uniform_sampler("toon_map", toon.map_texture(t, s.base_color))
 
 
 def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False):
-    shader = shader_lib.get("surface")
+    """One program per shading mode in use (EL_SURFACE_MODE is fixed when it is built: a uniform
+    branch would make every fragment pay for every mode on llvmpipe)."""
+    draws = {}
+    for inst in scene.instances:
+        gm = gpu_meshes[id(inst.mesh)]
+        for slot, batch in gm.surface.items():
+            s = gm.extract.slot_shading[slot]
+            draws.setdefault(_surface_mode(s, whiteout), []).append((inst.matrix, s, batch))
     with targets.surface_fb.bind():
         targets.surface_fb.clear(color=(0.0, 0.0, 0.0, 0.0), depth=1.0)
         gpu.state.depth_test_set('LESS_EQUAL')
         gpu.state.depth_mask_set(True)
         gpu.state.blend_set('NONE')
         gpu.state.face_culling_set('NONE')
-        shader.bind()
-        shader.uniform_block("frame", ubo)
-        for inst in scene.instances:
-            gm = gpu_meshes[id(inst.mesh)]
-            shader.uniform_float("model", _mat(inst.matrix))
-            for slot, batch in gm.surface.items():
-                _shading_uniforms(shader, gm.extract.slot_shading[slot])
-                _toon_uniforms(shader, gm.extract.slot_shading[slot], whiteout)
+        for mode, items in sorted(draws.items()):
+            shader = shader_lib.get("surface", {"EL_SURFACE_MODE": mode})
+            shader.bind()
+            shader.uniform_block("frame", ubo)
+            for matrix, s, batch in items:
+                shader.uniform_float("model", _mat(matrix))
+                _shading_uniforms(shader, s, specular=mode == 0)
+                _toon_uniforms(shader, s, mode)
                 batch.draw(shader)
         gpu.state.depth_test_set('NONE')
         gpu.state.depth_mask_set(False)

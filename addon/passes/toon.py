@@ -84,12 +84,6 @@ def map_texture(toon, base):
     return tex
 
 
-def dummy():
-    if "dummy" not in _ramps:
-        _ramps["dummy"] = _upload(np.ones((2, 2, 4), np.float32))
-    return _ramps["dummy"]
-
-
 def forget_images():
     """Images may have been edited: re-read them on next use."""
     for key in [k for k in _maps if k[0] == "image"]:

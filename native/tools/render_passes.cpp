@@ -58,7 +58,6 @@ struct Renderer::Impl {
     std::map<int, std::unique_ptr<Program>> edge_programs;  // per edge method
     glm::vec4 table_params{0.0f};
     std::unique_ptr<Texture> table = highlight_table(table_params);
-    Texture dummy{1, 1, GL_RGBA32F};  // the toon samplers: mode 0 never reads them
     UniformBuffer ubo;
     std::vector<float> fullscreen = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
     VertexArray fullscreen_vao{composite, {{"pos", &fullscreen, 2}}};
@@ -127,9 +126,7 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
         r.surface.use();
         r.surface.uniform_buf("frame", r.ubo.id());
         r.shading(r.surface, m);
-        r.surface.set("toon", glm::vec4(0.0f));  // mode 0: Blinn-Phong
-        r.surface.texture("toon_ramp", r.dummy);
-        r.surface.texture("toon_map", r.dummy);
+        // Blinn-Phong: the surface program built without EL_SURFACE_MODE has no toon inputs.
         surface_vao.draw_triangles();
         gl::Disable(GL_DEPTH_TEST);
         gl::DepthMask(GL_FALSE);
