@@ -98,6 +98,9 @@ def open_scene(name, radius, samples):
         me.update()
         for p in me.polygons:
             p.use_smooth = True
+        if hasattr(me, "use_auto_smooth"):  # 3.x: smooth faces, sharp creases (as the fandisk sample)
+            me.use_auto_smooth = True
+            me.auto_smooth_angle = math.radians(30.0)
         for mat in ob.data.materials:
             me.materials.append(mat)
         ob.data = me

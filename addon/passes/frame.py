@@ -190,7 +190,8 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
         shader.uniform_block("frame", ubo)
         shader.uniform_sampler("cos_power_table", tex)
         shader.uniform_sampler("surface_depth", targets.surface_depth)
-        shader.uniform_float("table_params", (*params[:3], 0.0))
+        if edge_method() != EDGE_METHODS["quadrature"]:  # reads no table: its program drops the uniform
+            shader.uniform_float("table_params", (*params[:3], 0.0))
         for inst in scene.instances:
             gm = gpu_meshes[id(inst.mesh)]
             if not gm.edges:
