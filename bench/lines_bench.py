@@ -9,7 +9,7 @@ the machine is shared).
 Per mesh, back to back, at the same resolution, camera, sun and 1 sample per pixel:
 
   EdgeLight              EDGELIGHT engine, highlights off, lines off (surface only)
-  EdgeLight + lines      the same with silhouette + crease + border lines (if the add-on has them)
+  EdgeLight + lines      the same with silhouette + crease + border lines
   EEVEE                  BLENDER_EEVEE, taa_render_samples = 1
   EEVEE + Freestyle      the same with a Freestyle line set: silhouette + crease + border, visible
   Line Art eval          a Grease Pencil object with a Line Art modifier on the mesh (contour, which
@@ -166,34 +166,15 @@ def mesh_counts(ob):
 # ---------------------------------------------------------------------------------------------
 # Scene
 
-def eevee_id():
-    for name in ("BLENDER_EEVEE", "BLENDER_EEVEE_NEXT"):
-        try:
-            bpy.context.scene.render.engine = name
-            return name
-        except TypeError:
-            continue
-    raise RuntimeError("no EEVEE")
-
-
-def edgelight_available():
-    try:
-        bpy.ops.preferences.addon_enable(module="edgelight")
-    except Exception as e:  # already enabled via --addons, or not installed
-        log(f"addon_enable(edgelight): {e}")
-    try:
-        bpy.context.scene.render.engine = "EDGELIGHT"
-        return hasattr(bpy.context.scene, "edgelight")
-    except TypeError:
-        return False
-
-
-def edgelight_lines_available(scene):
-    el = getattr(scene, "edgelight", None)
-    if el is None or not hasattr(el, "use_lines") or not hasattr(el, "crease_angle"):
-        return False
-    return all(hasattr(el, k) and hasattr(getattr(el, k), "enabled")
-               for k in ("line_silhouette", "line_crease", "line_border"))
+def enable_edgelight():
+    """The EdgeLight add-on (installed by scripts/install_addon.sh); exits with a clear message
+    if Blender cannot find it."""
+    import addon_utils
+    if addon_utils.enable("edgelight", default_set=True) is None:
+        sys.exit("lines_bench: the EdgeLight add-on is not installed "
+                 "(BLENDER_USER_SCRIPTS=$(scripts/install_addon.sh) blender -b ...)")
+    import edgelight
+    return edgelight
 
 
 def setup_scene(args):
@@ -237,8 +218,7 @@ def setup_scene(args):
     if bsdf is not None:
         bsdf.inputs["Base Color"].default_value = (0.8, 0.8, 0.8, 1.0)
         bsdf.inputs["Roughness"].default_value = 0.6
-    if hasattr(mat, "edgelight"):
-        mat.edgelight.enabled = False  # no rounded-edge highlights: lines are what is compared
+    mat.edgelight.use_rounding = False  # no rounded-edge highlights: lines are what is compared
 
     # Freestyle: one line set, visible silhouette + crease + border, 1.5 px black lines.
     r.line_thickness_mode = 'ABSOLUTE'
@@ -309,29 +289,19 @@ def set_edgelight(scene, lines):
     scene.render.use_freestyle = False
     el = scene.edgelight
     el.samples = 1
-    if hasattr(el, "highlights"):
-        el.highlights = False
-    if edgelight_lines_available(scene):
-        el.use_lines = lines
-        el.crease_angle = math.radians(CREASE_DEG)
-        if hasattr(el, "hidden_lines"):
-            el.hidden_lines = 'OFF'  # visible lines only, like the Freestyle line set
-        for k in ("line_silhouette", "line_crease", "line_border"):
-            style = getattr(el, k)
-            style.enabled = True
-            if hasattr(style, "width"):
-                style.width = LINE_PX
-            if hasattr(style, "unit"):
-                style.unit = 'PIXELS'
-            if hasattr(style, "taper"):
-                style.taper = 0.0
-        for k in ("line_contour", "line_marked", "line_material"):
-            if hasattr(el, k):
-                getattr(el, k).enabled = False
+    el.highlights = False
+    el.use_lines = lines
+    el.crease_angle = math.radians(CREASE_DEG)
+    el.hidden_lines = 'OFF'  # visible lines only, like the Freestyle line set
+    for k in ("line_silhouette", "line_crease", "line_border"):
+        style = getattr(el, k)
+        style.enabled, style.width, style.unit, style.taper = True, LINE_PX, 'PIXELS', 0.0
+    for k in ("line_contour", "line_marked", "line_material"):
+        getattr(el, k).enabled = False
 
 
 def set_eevee(scene, freestyle):
-    scene.render.engine = eevee_id()
+    scene.render.engine = enable_edgelight().compat.eevee_engine_id()
     scene.eevee.taa_render_samples = 1
     scene.render.use_freestyle = freestyle
 
@@ -406,7 +376,7 @@ def time_eval(gp_ob):
 
 # ---------------------------------------------------------------------------------------------
 
-def run_mesh(name, args, scene, cam, mat, have_el, have_lines, results):
+def run_mesh(name, args, scene, cam, mat, results):
     path = mesh_path(args.mesh_dir, name, os.path.join(args.png_dir, "meshes"))
     t0 = time.perf_counter()
     verts, faces = read_off(path)
@@ -436,14 +406,9 @@ def run_mesh(name, args, scene, cam, mat, have_el, have_lines, results):
         "lineart_eval": None,
         "eevee_lineart": lineart_render_setup,
     }
-    skipped = {}
-    if not have_el:
-        skipped["edgelight"] = skipped["edgelight_lines"] = "EdgeLight add-on not available"
-    elif not have_lines:
-        skipped["edgelight_lines"] = "edgelight lines: not available"
     if not row["lineart_strokes"]:
         log(f"  WARNING: Line Art produced no strokes on {name}")
-    active = [key for key, _ in METHODS if key not in skipped]
+    active = [key for key, _ in METHODS]
     times = {key: [] for key in active}
     notes = {key: [] for key in active}
 
@@ -482,11 +447,8 @@ def run_mesh(name, args, scene, cam, mat, have_el, have_lines, results):
     scene.render.use_freestyle = False
 
     for key, _ in METHODS:
-        if key in skipped:
-            row[key] = {"times": [], "median": None, "note": skipped[key]}
-        else:
-            row[key] = {"times": times[key], "median": statistics.median(times[key]), "note": "; ".join(notes[key])}
-            log(f"{name} {key}: median {row[key]['median'] * 1e3:.1f} ms {row[key]['note']}")
+        row[key] = {"times": times[key], "median": statistics.median(times[key]), "note": "; ".join(notes[key])}
+        log(f"{name} {key}: median {row[key]['median'] * 1e3:.1f} ms {row[key]['note']}")
     if not row["lineart_strokes"]:
         row["lineart_eval"]["note"] = "Line Art produced no strokes"
     t0 = time.perf_counter()
@@ -518,7 +480,7 @@ def ratio(row, a, b):
     return f"{ca['median'] / cb['median']:.2f}"
 
 
-def write_outputs(args, results, have_el, have_lines):
+def write_outputs(args, results):
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     with open(args.out, "w") as f:
         f.write("mesh,triangles,edges,method,runs,median_ms,min_ms,max_ms,note\n")
@@ -549,14 +511,10 @@ def write_outputs(args, results, have_el, have_lines):
                           ratio(row, "eevee_freestyle", "eevee"),
                           ratio(row, "lineart_eval", "edgelight_lines")]) + " |")
     lines.append("")
-    if not have_el:
-        lines.append("- EdgeLight: add-on not available (set BLENDER_USER_SCRIPTS, see scripts/install_addon.sh)")
-    elif not have_lines:
-        lines.append("- edgelight lines: not available (the add-on has no `scene.edgelight.use_lines` yet)")
     for row in results:
         for key, label in METHODS:
             note = row[key]["note"]
-            if note and "not available" not in note:
+            if note:
                 lines.append(f"- {row['mesh']}, {label}: {note}")
     lines.append("- `*`: a single frame, warm-up included (longer than the limit).")
     lines.append("- Line Art eval: one depsgraph update of the Grease Pencil object after `update_tag()` "
@@ -572,15 +530,13 @@ def write_outputs(args, results, have_el, have_lines):
 def main():
     args = parse_args()
     os.makedirs(args.png_dir, exist_ok=True)
-    have_el = edgelight_available()
+    enable_edgelight()
     scene, cam, mat = setup_scene(args)
-    have_lines = have_el and edgelight_lines_available(scene)
-    log(f"Blender {bpy.app.version_string}; EdgeLight: {'yes' if have_el else 'not available'}; "
-        f"edgelight lines: {'yes' if have_lines else 'not available'}")
+    log(f"Blender {bpy.app.version_string}")
     results = []
     for name in args.meshes:
-        run_mesh(name, args, scene, cam, mat, have_el, have_lines, results)
-    write_outputs(args, results, have_el, have_lines)
+        run_mesh(name, args, scene, cam, mat, results)
+    write_outputs(args, results)
 
 
 main()

@@ -20,16 +20,6 @@ AA_SAMPLES = 8
 REPEAT = 3
 
 
-def eevee_id():
-    for name in ("BLENDER_EEVEE_NEXT", "BLENDER_EEVEE"):
-        try:
-            bpy.context.scene.render.engine = name
-            return name
-        except TypeError:
-            continue
-    raise RuntimeError("no EEVEE")
-
-
 def open_sample(name):
     bpy.ops.wm.open_mainfile(filepath=os.path.join(ROOT, "blend_samples", name + ".blend"))
     s = bpy.context.scene
@@ -52,7 +42,8 @@ def workbench(s):
 
 
 def eevee(s):
-    s.render.engine = eevee_id()
+    import edgelight
+    s.render.engine = edgelight.compat.eevee_engine_id()
     s.eevee.taa_render_samples = AA_SAMPLES
 
 

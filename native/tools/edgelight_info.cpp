@@ -1,5 +1,6 @@
 // edgelight-info MESH [--crease DEG] [--eye X Y Z | --view-dir X Y Z]
 // Prints what the library sees in a mesh, as JSON: the quickest check of a model's edges.
+#include "cli_number.hpp"
 #include "mesh_io.hpp"
 
 #include <edgelight/edgelight.h>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -33,10 +35,9 @@ struct Args {
 };
 
 float number(const char* s) {
-    char* end = nullptr;
-    const float v = std::strtof(s, &end);
-    if (end == s || *end != '\0' || !std::isfinite(v)) throw std::invalid_argument(std::string("not a number: ") + s);
-    return v;
+    const double v = el_tools::cli_number(s);
+    if (std::abs(v) > std::numeric_limits<float>::max()) throw std::invalid_argument(std::string("not a float: ") + s);
+    return float(v);
 }
 
 Args parse(int argc, char** argv) {

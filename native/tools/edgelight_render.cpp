@@ -2,6 +2,7 @@
 // Renders a mesh with EdgeLight's surface and edge-highlight passes offscreen (OSMesa, llvmpipe)
 // from the same shaders/ sources the Blender add-on compiles, and writes a PNG.
 #include "mesh_batches.hpp"
+#include "cli_number.hpp"
 #include "mesh_io.hpp"
 #include "osmesa_context.hpp"
 #include "png_write.hpp"
@@ -51,13 +52,6 @@ struct Args {
     double fov = 39.5977, strength = 3.0, shininess = 30.0, radius = 0.01, K = 1.0, crease = 30.0;
 };
 
-double number(const char* s) {
-    char* end = nullptr;
-    const double v = std::strtod(s, &end);
-    if (end == s || *end != '\0' || !std::isfinite(v)) throw std::invalid_argument(std::string("not a number: ") + s);
-    return v;
-}
-
 Args parse(int argc, char** argv) {
     Args a;
     for (int i = 1; i < argc; ++i) {
@@ -67,11 +61,11 @@ Args parse(int argc, char** argv) {
         };
         auto vec3 = [&](glm::dvec3& v) {
             need(3);
-            for (int k = 0; k < 3; ++k) v[k] = number(argv[++i]);
+            for (int k = 0; k < 3; ++k) v[k] = el_tools::cli_number(argv[++i]);
         };
         auto scalar = [&](double& v, double lo, double hi) {
             need(1);
-            v = number(argv[++i]);
+            v = el_tools::cli_number(argv[++i]);
             if (!(v >= lo && v <= hi)) throw std::invalid_argument(arg + " out of range");
         };
         const double inf = std::numeric_limits<double>::infinity();

@@ -37,23 +37,37 @@ def visible_cube_edges(corners, edges, eye):
     return out
 
 
+def render_sphere(segments, rings, eye, **lines):
+    """A unit UV sphere at the origin, smooth-shaded, with only the given line types."""
+    scene = helpers.empty_scene(400, 400)
+    helpers.only_lines(scene, **lines)
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=segments, ring_count=rings, radius=1.0)
+    bpy.ops.object.shade_smooth()
+    helpers.add_camera(eye)
+    helpers.add_sun()
+    return helpers.render()
+
+
+def ink_around(rec, centre):
+    """Line alpha, and the radius (px) and angle (degrees) about `centre` of the inked pixels."""
+    a = rec["lines"][..., 3]
+    ys, xs = np.nonzero(a > 0.5)
+    dx, dy = xs + 0.5 - centre[0], ys + 0.5 - centre[1]
+    return a, a[ys, xs], np.hypot(dx, dy), np.degrees(np.arctan2(dy, dx)) % 360.0
+
+
+def image_radius(rec, eye):
+    """Radius in pixels of the image of a unit sphere's tangent cone seen from `eye`."""
+    return rec["camera"].px_per_unit * math.tan(math.asin(1.0 / np.linalg.norm(eye)))
+
+
 class Silhouettes(unittest.TestCase):
     def test_uv_sphere_silhouette_is_a_closed_ring_at_the_expected_radius(self):
-        scene = helpers.empty_scene(400, 400)
-        helpers.only_lines(scene, silhouette=3.0)
-        bpy.ops.mesh.primitive_uv_sphere_add(segments=96, ring_count=48, radius=1.0)
-        bpy.ops.object.shade_smooth()
-        D = 6.0
-        helpers.add_camera((0.0, -D, 0.0))
-        helpers.add_sun()
-        rec = helpers.render()
-        f_px = rec["camera"].px_per_unit
-        expected = f_px * math.tan(math.asin(1.0 / D))  # the tangent cone's image circle
-        a = rec["lines"][..., 3]
-        ys, xs = np.nonzero(a > 0.5)
-        r = np.hypot(xs + 0.5 - 200.0, ys + 0.5 - 200.0)
-        angle = np.degrees(np.arctan2(ys + 0.5 - 200.0, xs + 0.5 - 200.0)) % 360.0
-        ring_r = np.average(r, weights=a[ys, xs])
+        eye = (0.0, -6.0, 0.0)
+        rec = render_sphere(96, 48, eye, silhouette=3.0)
+        expected = image_radius(rec, eye)
+        a, weight, r, angle = ink_around(rec, (200.0, 200.0))
+        ring_r = np.average(r, weights=weight)
         print(f"silhouette ring: mean radius {ring_r:.2f} px, expected {expected:.2f} px, spread {r.min():.2f}..{r.max():.2f}")
         self.assertLess(abs(ring_r - expected), 0.5)
         self.assertLess(np.abs(r - expected).max(), 1.5 + 1.0)  # half the 3 px width plus a pixel
@@ -63,26 +77,15 @@ class Silhouettes(unittest.TestCase):
         inner = np.hypot(*np.meshgrid(np.arange(400) + 0.5 - 200.0, np.arange(400) + 0.5 - 200.0)) < expected - 3.0
         self.assertEqual(int((a[inner] > 0).sum()), 0)
 
-
     def test_smooth_contour_of_a_sphere_is_a_closed_ring_inside_the_faces(self):
-        scene = helpers.empty_scene(400, 400)
-        helpers.only_lines(scene, contour=2.0)
-        bpy.ops.mesh.primitive_uv_sphere_add(segments=24, ring_count=12, radius=1.0)
-        bpy.ops.object.shade_smooth()
-        D = 6.0
-        helpers.add_camera((0.3, -D, 0.2))
-        helpers.add_sun()
-        rec = helpers.render()
+        eye = (0.3, -6.0, 0.2)
+        rec = render_sphere(24, 12, eye, contour=2.0)
         self.assertGreater(rec["stats"].lines_drawn, 20)
-        a = rec["lines"][..., 3]
-        ys, xs = np.nonzero(a > 0.5)
-        c = helpers.project(rec, [(0.0, 0.0, 0.0)])[0]
-        r = np.hypot(xs + 0.5 - c[0], ys + 0.5 - c[1])
-        angle = np.degrees(np.arctan2(ys + 0.5 - c[1], xs + 0.5 - c[0])) % 360.0
+        _, _, r, angle = ink_around(rec, helpers.project(rec, [(0.0, 0.0, 0.0)])[0])
         bins = np.bincount((angle // 2.0).astype(int), minlength=180)
         self.assertTrue((bins > 0).all(), "closed: ink in every 2-degree sector")
         # A coarse sphere's interpolated contour runs inside the polygon outline, near the true circle.
-        expected = rec["camera"].px_per_unit * math.tan(math.asin(1.0 / np.linalg.norm((0.3, D, 0.2))))
+        expected = image_radius(rec, eye)
         self.assertLess(abs(np.median(r) - expected), 0.05 * expected)
 
 
