@@ -2,6 +2,8 @@
 // static classification. Built once by el_mesh_create; views share it read-only.
 #pragma once
 
+#include "big_array.hpp"
+
 #include <edgelight/edgelight.h>
 
 #include <glm/vec3.hpp>
@@ -11,11 +13,12 @@
 
 namespace el {
 
+// Its builders write every element they size, so resize() leaves new elements unset.
 struct Topology {
-    std::vector<uint32_t> edge_vertices;     // 2 per edge
-    std::vector<uint32_t> triangle_edges;    // 3 per triangle, side s = corner s -> s+1; EL_NO_EDGE
-    std::vector<uint32_t> edge_face_offsets; // CSR: edge_count + 1
-    std::vector<uint32_t> edge_faces;        // triangle indices
+    UnsetBigArray<uint32_t> edge_vertices;     // 2 per edge
+    UnsetBigArray<uint32_t> triangle_edges;    // 3 per triangle, side s = corner s -> s+1; EL_NO_EDGE
+    UnsetBigArray<uint32_t> edge_face_offsets; // CSR: edge_count + 1
+    UnsetBigArray<uint32_t> edge_faces;        // triangle indices
     bool host_edges = false;
 
     uint32_t edge_count() const { return uint32_t(edge_vertices.size() / 2); }

@@ -5,7 +5,7 @@
 
 namespace el {
 
-// From triangles alone: edges run lower -> higher vertex index, numbered in order of first use.
+// From triangles alone: edges run lower -> higher vertex index, numbered in (lower, higher) order.
 // Sides joining a vertex to itself (a repeated corner) map to EL_NO_EDGE.
 Topology build_topology(const uint32_t* triangles, uint32_t triangle_count, uint32_t vertex_count);
 
