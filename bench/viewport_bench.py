@@ -3,8 +3,10 @@
     xvfb-run -a -s "-screen 0 1400x1000x24" blender --factory-startup --addons edgelight \
         --python bench/viewport_bench.py -- out/viewport_bench.md
 
-Scenes: the three samples, and generated scenes of 100k and 1M triangles (grids of cubes, every
-cube edge rounded). Modes: 'orbit' turns the view 1 degree before every draw (a new image each
+Scenes: the samples, and generated scenes of 100k and 1M triangles: grids of cubes with every
+cube edge rounded (a stress case: one rounded edge per triangle), and arrays of the fandisk part
+(linked duplicates, rounded at its creases). EDGELIGHT_BENCH_SCENES=cube,100k,parts100k picks
+scenes. Modes: 'orbit' turns the view 1 degree before every draw (a new image each
 time), with highlights off (surface only), on, and off with ink lines (silhouettes, creases
 above 45 degrees, borders: a native view update and new silhouette batches per draw); 'static'
 redraws an unchanged view (the cached image). Times come from bpy.ops.wm.redraw_timer, best of REPEAT runs.
@@ -22,6 +24,8 @@ ARGS = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 OUT = ARGS[0] if ARGS else os.path.join(ROOT, "out", "viewport_bench.md")
 FRAMES = 10
 REPEAT = 3
+# EDGELIGHT_BENCH_SCENES=cube,100k,parts1000k: only those (samples by name; grids, part arrays).
+ONLY = [x for x in os.environ.get("EDGELIGHT_BENCH_SCENES", "").split(",") if x]
 rows = []
 
 
@@ -64,6 +68,24 @@ def grid_scene(triangles):
     bpy.context.scene.collection.objects.link(ob)
     ob.location = (-size / 2, -size / 2, -size / 2)
     return size
+
+
+def part_array(triangles):
+    """The fandisk sample repeated as linked duplicates (one mesh, many objects) on a grid until
+    the scene has `triangles`: a dense hard-surface scene, rounded where its creases are (~5 %
+    of its edges), unlike the cube grid where every cube edge is."""
+    bpy.ops.wm.open_mainfile(filepath=os.path.join(ROOT, "blend_samples", "fandisk.blend"))
+    part = bpy.data.objects["Fandisk"]
+    count = int(math.ceil(triangles / len(part.data.polygons)))
+    side = int(math.ceil(count ** (1.0 / 3.0)))
+    step = 1.3 * max(part.dimensions)
+    for k in range(count):
+        ob = part if k == 0 else part.copy()  # copy() shares the mesh
+        if k:
+            bpy.context.scene.collection.objects.link(ob)
+        ob.location = ((k % side - (side - 1) / 2) * step, ((k // side) % side - (side - 1) / 2) * step,
+                       (k // (side * side) - (side - 1) / 2) * step)
+    return side * step
 
 
 def draw_ms(orbit, frames=FRAMES, repeat=REPEAT):
@@ -111,14 +133,21 @@ def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
 
 def steps():
     for name in ("cube", "fandisk", "prop", "toon"):
+        if ONLY and name not in ONLY:
+            continue
         bpy.ops.wm.open_mainfile(filepath=os.path.join(ROOT, "blend_samples", name + ".blend"))
         yield
         measure(name)
     for tris in (100_000, 1_000_000):
-        size = grid_scene(tris)
-        yield
         big = tris >= 1_000_000  # a draw takes seconds on llvmpipe: fewer of them
-        measure(f"{tris // 1000}k-triangle cube grid", distance=size * 2.2, frames=3 if big else FRAMES, repeat=1 if big else REPEAT)
+        if not ONLY or f"{tris // 1000}k" in ONLY:
+            size = grid_scene(tris)
+            yield
+            measure(f"{tris // 1000}k-triangle cube grid", distance=size * 2.2, frames=3 if big else FRAMES, repeat=1 if big else REPEAT)
+        if not ONLY or f"parts{tris // 1000}k" in ONLY:
+            size = part_array(tris)
+            yield
+            measure(f"{tris // 1000}k-triangle fandisk array", distance=size * 1.6, frames=3 if big else FRAMES, repeat=1 if big else REPEAT)
     _, _, region = view3d()
     lines = [f"Blender {bpy.app.version_string}, 3D view {region.width}x{region.height} px, Rendered shading, "
              f"1 viewport sample; ms per view_draw, best of {REPEAT} runs of {FRAMES} draws (the 1M scene: one run of 3).", "",

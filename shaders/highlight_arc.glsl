@@ -317,7 +317,10 @@ float el_arc_kernel(ElArc g, vec2 d, float d_len, float d_axial, float n)
   float sqrt_m = sqrt(m);
   float lv = g.vis.hi - g.vis.lo, ll = b - a;
 
-  if (ll * sqrt_m <= EL_GAUSS_SPAN) {
+  /* The diffuse mean (n = 1, a constant where el_edge_colour calls it) always takes the 8-point
+   * rule: its integrand is a cosine over at most pi (error ~1e-9), and with the table branch
+   * folded away llvmpipe no longer runs that branch's 32 texel reads masked in every fragment. */
+  if (n == 1.0 || ll * sqrt_m <= EL_GAUSS_SPAN) {
     ElWeight wj = el_weight_on(g.vis, a, b);
     float h = 0.5 * ll;
     float dp = exp(log_dp);
