@@ -1,6 +1,6 @@
 // edgelight-info MESH [--crease DEG] [--eye X Y Z | --view-dir X Y Z]
 // Prints what the library sees in a mesh, as JSON: the quickest check of a model's edges.
-#include "cli_number.hpp"
+#include "cli_args.hpp"
 #include "mesh_io.hpp"
 
 #include <edgelight/edgelight.h>
@@ -58,12 +58,8 @@ Args parse(int argc, char** argv) {
         } else if (arg == "-h" || arg == "--help") {
             std::cout << kUsage;
             std::exit(0);
-        } else if (!arg.empty() && arg[0] == '-') {
-            throw std::invalid_argument("unknown option " + arg);
-        } else if (a.mesh.empty()) {
-            a.mesh = arg;
         } else {
-            throw std::invalid_argument("more than one mesh given");
+            el_tools::cli_mesh_path(arg, a.mesh);
         }
     }
     if (a.mesh.empty()) throw std::invalid_argument("no mesh given");

@@ -2,7 +2,7 @@
 // Renders a mesh with EdgeLight's surface and edge-highlight passes offscreen (OSMesa, llvmpipe)
 // from the same shaders/ sources the Blender add-on compiles, and writes a PNG.
 #include "mesh_batches.hpp"
-#include "cli_number.hpp"
+#include "cli_args.hpp"
 #include "mesh_io.hpp"
 #include "osmesa_context.hpp"
 #include "png_write.hpp"
@@ -112,12 +112,8 @@ Args parse(int argc, char** argv) {
         } else if (arg == "-h" || arg == "--help") {
             std::cout << kUsage;
             std::exit(0);
-        } else if (!arg.empty() && arg[0] == '-') {
-            throw std::invalid_argument("unknown option " + arg);
-        } else if (a.mesh.empty()) {
-            a.mesh = arg;
         } else {
-            throw std::invalid_argument("more than one mesh given");
+            el_tools::cli_mesh_path(arg, a.mesh);
         }
     }
     if (a.mesh.empty()) throw std::invalid_argument("no mesh given");
