@@ -19,14 +19,20 @@ void main()
   float slope = sqrt(max(1.0 - cmin * cmin, 0.0)) / cmin;
   float bias = (abs(across) + 1.0) * world_per_px * (slope + 0.05) + 1e-5 * dist;
   float inv_surface = texelFetch(surface_depth, ivec2(pc), 0).r;
-  float edge_depth = -(frame.view * vec4(X, 1.0)).z;
-  if (inv_surface > 0.0 && edge_depth > 1.0 / inv_surface + bias) {
+  vec4 view_X = frame.view * vec4(X, 1.0);
+  float edge_depth = -view_X.z;
+  /* The near and far planes clip the edge line here, not the quad: its depth was pulled toward
+   * the eye for the early depth test (edge_highlight.vert). */
+  vec4 clip_X = frame.projection * view_X;
+  if ((inv_surface > 0.0 && edge_depth > 1.0 / inv_surface + bias) || abs(clip_X.z) > clip_X.w) {
     discard;
   }
 
   /* Short edges come shaded from the vertex shader; long ones are shaded here, per pixel. */
   int method = el_method();
-  bool per_edge = edge_color.w > 0.5;
+  /* Only the whole-arc methods shade per edge (edge_highlight.vert). A constant false otherwise,
+   * so the branches below fold away: llvmpipe would run them masked, el_arc twice. */
+  bool per_edge = (method == EL_METHOD_WHOLE || method == EL_METHOD_PAPER) && edge_color.w > 0.5;
   ElArc g;
   float width, s;
   if (per_edge) {

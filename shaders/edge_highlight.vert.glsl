@@ -1,3 +1,45 @@
+/* Half the quad's width in pixels at world point `at` on the edge: half a pixel past the widest
+ * the band can be there. */
+float el_half_width_px(vec3 at)
+{
+  float dist = frame.eye.w > 0.5 ? length(frame.eye.xyz - at) : 1.0;
+  float px_per_unit = frame.camera.x / max(dist, 1e-20);
+  /* The whole arc's projected width. Bands wider than a pixel lie where the fillet's image is
+   * (edge_band.glsl): up to its tangent length r tan(alpha / 2) = r |N1 - N2| / |N1 + N2| from
+   * the line on either side. The paper's method draws a one-pixel line whatever the width. */
+  float reach_px = 0.5 * edge_radius * length(edge_n1 - edge_n2) * px_per_unit;
+  int method = el_method();
+  if (method == EL_METHOD_PARTIAL || method == EL_METHOD_QUADRATURE) {
+    float tangent = length(edge_n1 - edge_n2) / max(length(edge_n1 + edge_n2), 1e-3);
+    reach_px = max(reach_px, edge_radius * tangent * px_per_unit);
+  }
+  float half_px = min(reach_px, 2048.0) + 0.5 + 1.0 / 64.0;
+  return method == EL_METHOD_PAPER ? max(half_px, 1.0 + 1.0 / 64.0) : half_px;
+}
+
+/* Hidden pixels are rejected by the depth test against the surface pass before the fragment
+ * shader runs (llvmpipe then skips whole blocks; a discard does not end its fragments). The
+ * quad's depth at an end is that end pulled toward the eye by more than the fragment shader's
+ * own visibility bias at any pixel of the quad there, so that exact test still decides every
+ * pixel it could keep: the bias (edge_highlight.frag) with |across| at its largest, the faces'
+ * cosines halved (the view ray turns along the edge) and a factor 2. Returns the NDC depth, or
+ * -1 (the near plane: nothing is rejected) when the pulled point would reach the near plane. */
+float el_pulled_depth(vec3 at)
+{
+  bool persp = frame.eye.w > 0.5;
+  vec3 V = el_safe_normalize(persp ? frame.eye.xyz - at : -frame.view_dir.xyz);
+  float dist = persp ? length(frame.eye.xyz - at) : 1.0;
+  float c_min = max(0.5 * min(abs(dot(normalize(edge_n1), V)), abs(dot(normalize(edge_n2), V))), 1.0 / 16.0);
+  float slope = sqrt(max(1.0 - c_min * c_min, 0.0)) / c_min;
+  float pull = 2.0 * ((el_half_width_px(at) + 1.0) * (dist / frame.camera.x) * (slope + 0.05) + 1e-5 * dist);
+  if (persp && !(pull < 0.5 * dist)) {
+    return -1.0;
+  }
+  vec4 cp = frame.projection * (frame.view * vec4(at + V * pull, 1.0));
+  float z = cp.z / cp.w;
+  return cp.w > 0.0 && z > -1.0 ? z : -1.0;
+}
+
 /* Edge highlight pass: one screen-space quad per rounded edge (no wide GL lines, no geometry
  * shader). corner.x picks the end (0: p0, 1: p1), corner.y the side (-1, +1), corner.z is the
  * radius. The quad reaches half a pixel past the rounded edge's projected band on each side: the
@@ -29,12 +71,6 @@ void main()
   vec2 across = vec2(-dir.y, dir.x);
   edge_screen = vec4(s0, across);
 
-  /* Widest the band can be: the whole arc's projected width at this end, in pixels. */
-  vec3 V = frame.eye.w > 0.5 ? frame.eye.xyz - world : -frame.view_dir.xyz;
-  float dist = frame.eye.w > 0.5 ? length(V) : 1.0;
-  float px_per_unit = frame.camera.x / max(dist, 1e-20);
-  float width_px = edge_radius * length(edge_n1 - edge_n2) * px_per_unit;
-
   /* Cull before any fragment runs (viewport.visible_edges counts the same tests): both faces
    * turned away (judged at the edge's midpoint, the same for all four corners), or a weight
    * that cannot reach one 8-bit step. */
@@ -45,19 +81,6 @@ void main()
   if ((dot(edge_n1, Vm) <= 0.0 && dot(edge_n2, Vm) <= 0.0) || tint.w * min(width_m, 1.0) < 1.0 / 255.0) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     return;
-  }
-  /* Bands wider than a pixel lie where the fillet's image is (edge_band.glsl): up to its
-   * tangent length r tan(alpha / 2) = r |N1 - N2| / |N1 + N2| from the line on either side. The
-   * paper's method draws a one-pixel line whatever the width. */
-  int method = el_method();
-  float reach_px = 0.5 * width_px;
-  if (method == EL_METHOD_PARTIAL || method == EL_METHOD_QUADRATURE) {
-    float tangent = length(edge_n1 - edge_n2) / max(length(edge_n1 + edge_n2), 1e-3);
-    reach_px = max(reach_px, edge_radius * tangent * px_per_unit);
-  }
-  float half_px = min(reach_px, 2048.0) + 0.5 + 1.0 / 64.0;
-  if (method == EL_METHOD_PAPER) {
-    half_px = max(half_px, 1.0 + 1.0 / 64.0);
   }
 
   /* Short edges: shaded once, at the midpoint, by the edge's one shading vertex (corner.w = 1),
@@ -73,7 +96,11 @@ void main()
     edge_arc = vec2(g.width, sqrt(dot(g.view, g.view)));  /* visible width, |E x V| */
   }
 
-  vec2 s = (corner.x < 0.5 ? s0 : s1) + across * corner.y * half_px;
+  /* Both ends' pulled depths, so that all four corners agree on whether the edge is tested. */
+  float z0 = el_pulled_depth(w0), z1 = el_pulled_depth(w1);
+  float z = (z0 > -1.0 && z1 > -1.0) ? (corner.x < 0.5 ? z0 : z1) : -1.0;
+
+  vec2 s = (corner.x < 0.5 ? s0 : s1) + across * corner.y * el_half_width_px(world);
   edge_point = world;
-  gl_Position = vec4((s / frame.viewport.xy * 2.0 - 1.0) * c.w, c.z, c.w);
+  gl_Position = vec4((s / frame.viewport.xy * 2.0 - 1.0) * c.w, z * c.w, c.w);
 }

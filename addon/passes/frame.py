@@ -104,7 +104,8 @@ class Targets:
         self.lines = compat.texture((width, height), 'RGBA32F')
         self.line_depth = compat.texture((width, height), 'DEPTH_COMPONENT32F')
         self.surface_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.surface_color, self.surface_depth))
-        self.highlight_fb = gpu.types.GPUFrameBuffer(color_slots=(self.highlight,))
+        # The surface pass's depth: the edge pass depth-tests against it (read only).
+        self.highlight_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.highlight,))
         self.result_fb = gpu.types.GPUFrameBuffer(color_slots=(self.result,))
         self.line_fb = gpu.types.GPUFrameBuffer(depth_slot=self.line_depth, color_slots=(self.lines,))
         self.lines_empty = False  # the line target holds no stroke (cleared, none drawn since)
@@ -186,6 +187,10 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
     with targets.highlight_fb.bind():
         targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
         gpu.state.blend_set('ALPHA_PREMULT')
+        # Hidden pixels fail before the fragment shader (the vertex shader pulls the quads toward
+        # the eye past the shader's own visibility bias); no depth writes.
+        gpu.state.depth_test_set('LESS_EQUAL')
+        gpu.state.depth_mask_set(False)
         shader.bind()
         shader.uniform_block("frame", ubo)
         shader.uniform_sampler("cos_power_table", tex)
@@ -203,6 +208,7 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
                 shader.uniform_float("tint", (*s.tint, s.K))
                 batch.draw(shader)
                 stats.edges_drawn += len(gm.extract.edges[slot])
+        gpu.state.depth_test_set('NONE')
         gpu.state.blend_set('NONE')
 
 

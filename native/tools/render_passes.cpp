@@ -96,7 +96,7 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
     const int w = camera.width, h = camera.height;
     Texture surface_color(w, h, GL_RGBA32F), surface_depth(w, h, GL_R32F), depth(w, h, GL_DEPTH_COMPONENT32F),
         highlight(w, h, GL_RGBA32F), lines(w, h, GL_RGBA32F), result(w, h, GL_RGBA32F);
-    Framebuffer surface_fb({&surface_color, &surface_depth}, &depth), highlight_fb({&highlight}),
+    Framebuffer surface_fb({&surface_color, &surface_depth}, &depth), highlight_fb({&highlight}, &depth),
         line_fb({&lines}), result_fb({&result});
     VertexArray surface_vao(r.surface, {{"pos", &scene.surface.pos, 3}, {"nor", &scene.surface.nor, 3}});
     const EdgeQuads q = edge_quads(scene.edges, scene.material.radius, kProvoking);
@@ -145,7 +145,14 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
             edge.set("table_params", r.table_params);
             r.shading(edge, m);
             edge.set("tint", glm::vec4(m.tint, m.K));
+            // Depth-tested against the surface (read only), as the add-on does: the vertex
+            // shader pulls the quads toward the eye past the fragment shader's own bias.
+            if (scene.edge_depth_test) {
+                gl::Enable(GL_DEPTH_TEST);
+                gl::DepthFunc(GL_LEQUAL);
+            }
             edge_vao.draw_triangles();
+            gl::Disable(GL_DEPTH_TEST);
             blend_none();
             gl::check("the edge highlight pass");
         }

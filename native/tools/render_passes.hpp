@@ -37,6 +37,10 @@ struct Scene {
     // add-on's), 1 the whole visible arc's mean everywhere (what el_highlight_reference computes
     // for one point), 2 the paper's 1-pixel line, 3 as 0 by brute-force quadrature.
     int edge_method = 0;
+    // The edge pass depth-tests its quads against the surface pass so hidden pixels skip the
+    // fragment shader (as the add-on does); off only to check that this rejects nothing the
+    // shader's own visibility test keeps.
+    bool edge_depth_test = true;
 };
 
 // Float buffers read back after the last sample, rows bottom-up (GL order).
