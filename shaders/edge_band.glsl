@@ -14,6 +14,12 @@
 #define EL_EDGE_METHOD EL_METHOD_PARTIAL
 #endif
 
+/* Edge quads fitted to where the band lies (edge_highlight.vert); 0 only to test that against
+ * quads symmetric about the line. */
+#ifndef EL_TIGHT_QUADS
+#define EL_TIGHT_QUADS true
+#endif
+
 int el_method()
 {
   return EL_EDGE_METHOD;

@@ -17,21 +17,36 @@ float el_half_width_px(vec3 at)
   return method == EL_METHOD_PAPER ? max(half_px, 1.0 + 1.0 / 64.0) : half_px;
 }
 
+/* Where the band lies across the edge line at world point `at` (pixels along `across`, low and
+ * high): the visible arc's image, as the fragment shader finds it per pixel (edge_band.glsl). */
+vec2 el_band_px(vec3 at, vec4 clip_at, vec2 across)
+{
+  bool persp = frame.eye.w > 0.5;
+  vec3 V = el_safe_normalize(persp ? frame.eye.xyz - at : -frame.view_dir.xyz);
+  float world_per_px = (persp ? length(frame.eye.xyz - at) : 1.0) / frame.camera.x;
+  ElArc g = el_arc(edge_dir, edge_n1, edge_n2, V);
+  vec3 P = el_safe_normalize(cross(el_safe_normalize(edge_dir), V));
+  vec4 q1 = frame.projection * (frame.view * vec4(at + P * world_per_px, 1.0));
+  float side = dot((q1.xy / q1.w - clip_at.xy / clip_at.w) * frame.viewport.xy, across) < 0.0 ? -1.0 : 1.0;
+  vec2 ends = el_band_ends(g, P) * (side * edge_radius / world_per_px);
+  return vec2(min(ends.x, ends.y), max(ends.x, ends.y));
+}
+
 /* Hidden pixels are rejected by the depth test against the surface pass before the fragment
  * shader runs (llvmpipe then skips whole blocks; a discard does not end its fragments). The
  * quad's depth at an end is that end pulled toward the eye by more than the fragment shader's
  * own visibility bias at any pixel of the quad there, so that exact test still decides every
- * pixel it could keep: the bias (edge_highlight.frag) with |across| at its largest, the faces'
- * cosines halved (the view ray turns along the edge) and a factor 2. Returns the NDC depth, or
+ * pixel it could keep: the bias (edge_highlight.frag) with |across| at its largest (half_px),
+ * the faces' cosines halved (the view ray turns along the edge) and a factor 2. Returns the NDC depth, or
  * -1 (the near plane: nothing is rejected) when the pulled point would reach the near plane. */
-float el_pulled_depth(vec3 at)
+float el_pulled_depth(vec3 at, float half_px)
 {
   bool persp = frame.eye.w > 0.5;
   vec3 V = el_safe_normalize(persp ? frame.eye.xyz - at : -frame.view_dir.xyz);
   float dist = persp ? length(frame.eye.xyz - at) : 1.0;
   float c_min = max(0.5 * min(abs(dot(normalize(edge_n1), V)), abs(dot(normalize(edge_n2), V))), 1.0 / 16.0);
   float slope = sqrt(max(1.0 - c_min * c_min, 0.0)) / c_min;
-  float pull = 2.0 * ((el_half_width_px(at) + 1.0) * (dist / frame.camera.x) * (slope + 0.05) + 1e-5 * dist);
+  float pull = 2.0 * ((half_px + 1.0) * (dist / frame.camera.x) * (slope + 0.05) + 1e-5 * dist);
   if (persp && !(pull < 0.5 * dist)) {
     return -1.0;
   }
@@ -96,11 +111,37 @@ void main()
     edge_arc = vec2(g.width, sqrt(dot(g.view, g.view)));  /* visible width, |E x V| */
   }
 
+  /* The quad's sides, the same offsets from the line at both ends: a parallelogram, so that
+   * edge_point interpolates to the foot of each pixel's perpendicular on the line (a trapezoid
+   * would skew it). Half a pixel past the band's reach on either side (the larger of the two
+   * ends'), or, with the per-pixel method, past where the band really lies (mostly on one side
+   * of the line): the union of its extents at both ends, widened by how far it can move as the
+   * view ray turns along the edge, within the reach. Fewer pixels run the fragment shader; none
+   * it would light is left out (tests/native/render/test_edge_culling.cpp). */
+  float half_px = max(el_half_width_px(w0), el_half_width_px(w1));
+  float reach = half_px - 0.5 - 1.0 / 64.0;
+  float lo = -reach, hi = reach;
+  int method = el_method();
+  if (EL_TIGHT_QUADS && (method == EL_METHOD_PARTIAL || method == EL_METHOD_QUADRATURE)) {
+    vec2 b0 = el_band_px(w0, c0, across), b1 = el_band_px(w1, c1, across);
+    bool persp = frame.eye.w > 0.5;
+    vec3 E = el_safe_normalize(edge_dir);
+    vec3 V0 = el_safe_normalize(persp ? frame.eye.xyz - w0 : -frame.view_dir.xyz);
+    vec3 V1 = el_safe_normalize(persp ? frame.eye.xyz - w1 : -frame.view_dir.xyz);
+    /* The band turns with P = E x V / |E x V|: by about the ray's turn over |E x V|. */
+    float turn = 2.0 * asin(min(0.5 * length(V1 - V0), 1.0));
+    float s_min = max(min(length(cross(E, V0)), length(cross(E, V1))), 1e-3);
+    float margin = reach * min(4.0 * turn / s_min, 1.0) + 1.0 / 32.0;
+    lo = clamp(min(b0.x, b1.x) - margin, -reach, reach);
+    hi = clamp(max(b0.y, b1.y) + margin, lo, reach);
+  }
+  float offset = corner.y < 0.0 ? lo - 0.5 - 1.0 / 64.0 : hi + 0.5 + 1.0 / 64.0;
+
   /* Both ends' pulled depths, so that all four corners agree on whether the edge is tested. */
-  float z0 = el_pulled_depth(w0), z1 = el_pulled_depth(w1);
+  float z0 = el_pulled_depth(w0, half_px), z1 = el_pulled_depth(w1, half_px);
   float z = (z0 > -1.0 && z1 > -1.0) ? (corner.x < 0.5 ? z0 : z1) : -1.0;
 
-  vec2 s = (corner.x < 0.5 ? s0 : s1) + across * corner.y * el_half_width_px(world);
+  vec2 s = (corner.x < 0.5 ? s0 : s1) + across * offset;
   edge_point = world;
   gl_Position = vec4((s / frame.viewport.xy * 2.0 - 1.0) * c.w, z * c.w, c.w);
 }

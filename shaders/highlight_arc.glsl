@@ -43,25 +43,6 @@ float el_safe_length(vec3 v)
   return s * sqrt(dot(v, v));
 }
 
-/* ln cos t. Below 0.5 its Taylor series, below 1 as -2 atanh(tan^2(t/2)): cos t rounds to a
- * multiple of 6e-8 near 0, and cos^n multiplies that by n. */
-float el_log_cos(float t)
-{
-  t = abs(t);
-  if (t < 0.5) {
-    float x = t * t;
-    return -x * (1.0 / 2.0 + x * (1.0 / 12.0 + x * (1.0 / 45.0 + x * (17.0 / 2520.0 + x * (31.0 / 14175.0 + x * (691.0 / 935550.0 + x * (5461.0 / 21283605.0)))))));
-  }
-  if (t < 1.0) {
-    float h = tan(0.5 * t);
-    float x = h * h, x2 = x * x;
-    float s = 1.0 + x2 * (1.0 / 3.0 + x2 * (1.0 / 5.0 + x2 * (1.0 / 7.0 + x2 * (1.0 / 9.0 + x2 * (1.0 / 11.0 + x2 * (1.0 / 13.0))))));
-    return -2.0 * x * s;
-  }
-  float c = cos(t);
-  return c > 0.0 ? log(c) : -1e30;
-}
-
 /* v * 2^-e with the largest component in [0.5, 1): exact, so directions keep every bit. */
 vec3 el_pow2_scale(vec3 v)
 {
@@ -90,6 +71,16 @@ float el_log1p(float x)
 {
   float u = 1.0 + x;
   return u == 1.0 ? x : log(u) * x / (u - 1.0);
+}
+
+/* ln cos t as log1p(-2 sin^2(t/2)): relative accuracy near t = 0 (cos t rounds to a multiple
+ * of 6e-8 there, and cos^n multiplies that by n), one branch-free expression (a piecewise
+ * version runs every piece in llvmpipe's SIMD lanes). */
+float el_log_cos(float t)
+{
+  float s = sin(0.5 * t);
+  float x = -2.0 * s * s;
+  return x > -1.0 ? el_log1p(x) : -1e30;
 }
 
 float el_cos_pow(float t, float n)

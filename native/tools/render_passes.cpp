@@ -55,7 +55,7 @@ void blend_additive_premult() {
 struct Renderer::Impl {
     std::string dir;
     Program surface, composite;
-    std::map<int, std::unique_ptr<Program>> edge_programs;  // per edge method
+    std::map<std::pair<int, bool>, std::unique_ptr<Program>> edge_programs;  // per edge method, quad fit
     glm::vec4 table_params{0.0f};
     std::unique_ptr<Texture> table = highlight_table(table_params);
     UniformBuffer ubo;
@@ -66,13 +66,14 @@ struct Renderer::Impl {
         : dir(shader_dir), surface(assemble_program(dir, "surface")), composite(assemble_program(dir, "composite")) {}
 
     // The edge program of one method, with the table layout fixed as the add-on fixes it
-    // (passes/frame.py: a define, not a uniform).
-    const Program& edge(int method) {
-        auto& p = edge_programs[method];
+    // (passes/frame.py: defines, not uniforms). tight_quads false: the test variant.
+    const Program& edge(int method, bool tight_quads) {
+        auto& p = edge_programs[{method, tight_quads}];
         if (!p) {
-            p = std::make_unique<Program>(assemble_program(
-                dir, "edge_highlight",
-                {{"EL_TABLE_LAYOUT", std::to_string(int(table_params.x))}, {"EL_EDGE_METHOD", std::to_string(method)}}));
+            p = std::make_unique<Program>(assemble_program(dir, "edge_highlight",
+                                                           {{"EL_TABLE_LAYOUT", std::to_string(int(table_params.x))},
+                                                            {"EL_EDGE_METHOD", std::to_string(method)},
+                                                            {"EL_TIGHT_QUADS", tight_quads ? "true" : "false"}}));
         }
         return *p;
     }
@@ -91,19 +92,63 @@ Renderer::Renderer(const std::string& shader_dir) : impl_(std::make_unique<Impl>
 
 Renderer::~Renderer() = default;
 
+// The render targets of one size.
+struct Targets {
+    Targets(int width, int height) : w(width), h(height) {}
+    int w, h;
+    Texture surface_color{w, h, GL_RGBA32F}, surface_depth{w, h, GL_R32F}, depth{w, h, GL_DEPTH_COMPONENT32F},
+        highlight{w, h, GL_RGBA32F}, lines{w, h, GL_RGBA32F}, result{w, h, GL_RGBA32F};
+    // The edge pass depth-tests against the surface pass's depth (read only).
+    Framebuffer surface_fb{{&surface_color, &surface_depth}, &depth}, highlight_fb{{&highlight}, &depth},
+        line_fb{{&lines}}, result_fb{{&result}};
+};
+
+class Renderer::Uploaded {
+public:
+    Uploaded(const Scene& s, const Program& surface, const Program& edge)
+        : scene(s), quads(edge_quads(s.edges, s.material.radius, kProvoking)),
+          surface_vao(surface, {{"pos", &s.surface.pos, 3}, {"nor", &s.surface.nor, 3}}),
+          edge_vao(edge,
+                   {{"p0", &quads.p0, 3}, {"p1", &quads.p1, 3}, {"n1", &quads.n1, 3}, {"n2", &quads.n2, 3},
+                    {"corner", &quads.corner, 4}},
+                   &quads.indices) {}
+
+    const Scene& scene;
+    const EdgeQuads quads;
+    VertexArray surface_vao, edge_vao;
+    std::unique_ptr<Targets> targets;
+};
+
+void Renderer::UploadedDelete::operator()(Uploaded* u) const { delete u; }
+
+Renderer::UploadedPtr Renderer::upload(const Scene& scene) {
+    return UploadedPtr(new Uploaded(scene, impl_->surface, impl_->edge(scene.edge_method, scene.tight_edge_quads)));
+}
+
 Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
+    const auto up = upload(scene);
+    draw(*up, camera, samples);
+    const Targets& t = *up->targets;
+    Images out;
+    out.width = t.w;
+    out.height = t.h;
+    out.result = t.result_fb.read(0, 4);
+    out.surface = t.surface_fb.read(0, 4);
+    out.inv_depth = t.surface_fb.read(1, 1);
+    out.highlight = t.highlight_fb.read(0, 4);
+    return out;
+}
+
+void Renderer::draw(Uploaded& up, const Camera& camera, int samples) {
     Impl& r = *impl_;
+    const Scene& scene = up.scene;
     const int w = camera.width, h = camera.height;
-    Texture surface_color(w, h, GL_RGBA32F), surface_depth(w, h, GL_R32F), depth(w, h, GL_DEPTH_COMPONENT32F),
-        highlight(w, h, GL_RGBA32F), lines(w, h, GL_RGBA32F), result(w, h, GL_RGBA32F);
-    Framebuffer surface_fb({&surface_color, &surface_depth}, &depth), highlight_fb({&highlight}, &depth),
-        line_fb({&lines}), result_fb({&result});
-    VertexArray surface_vao(r.surface, {{"pos", &scene.surface.pos, 3}, {"nor", &scene.surface.nor, 3}});
-    const EdgeQuads q = edge_quads(scene.edges, scene.material.radius, kProvoking);
-    const Program& edge = r.edge(scene.edge_method);
-    VertexArray edge_vao(edge, {{"p0", &q.p0, 3}, {"p1", &q.p1, 3}, {"n1", &q.n1, 3}, {"n2", &q.n2, 3},
-                                  {"corner", &q.corner, 4}},
-                         &q.indices);
+    if (!up.targets || up.targets->w != w || up.targets->h != h) up.targets = std::make_unique<Targets>(w, h);
+    Targets& t = *up.targets;
+    auto &surface_fb = t.surface_fb, &highlight_fb = t.highlight_fb, &line_fb = t.line_fb, &result_fb = t.result_fb;
+    auto &surface_color = t.surface_color, &surface_depth = t.surface_depth, &highlight = t.highlight,
+         &lines = t.lines;
+    const Program& edge = r.edge(scene.edge_method, scene.tight_edge_quads);
     const Material& m = scene.material;
     gl::Disable(GL_CULL_FACE);  // Blender shows both sides; the surface shader flips back faces
 
@@ -127,7 +172,7 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
         r.surface.uniform_buf("frame", r.ubo.id());
         r.shading(r.surface, m);
         // Blinn-Phong: the surface program built without EL_SURFACE_MODE has no toon inputs.
-        surface_vao.draw_triangles();
+        up.surface_vao.draw_triangles();
         gl::Disable(GL_DEPTH_TEST);
         gl::DepthMask(GL_FALSE);
         gl::check("the surface pass");
@@ -138,6 +183,12 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
             highlight_fb.clear_color(0, glm::vec4(0.0f));
             highlight_fb.bind();
             blend_alpha_premult();
+            // Depth-tested against the surface (read only), as the add-on does: the vertex
+            // shader pulls the quads toward the eye past the fragment shader's own bias.
+            if (scene.edge_depth_test) {
+                gl::Enable(GL_DEPTH_TEST);
+                gl::DepthFunc(GL_LEQUAL);
+            }
             edge.use();
             edge.uniform_buf("frame", r.ubo.id());
             edge.texture("cos_power_table", *r.table);
@@ -145,13 +196,7 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
             edge.set("table_params", r.table_params);
             r.shading(edge, m);
             edge.set("tint", glm::vec4(m.tint, m.K));
-            // Depth-tested against the surface (read only), as the add-on does: the vertex
-            // shader pulls the quads toward the eye past the fragment shader's own bias.
-            if (scene.edge_depth_test) {
-                gl::Enable(GL_DEPTH_TEST);
-                gl::DepthFunc(GL_LEQUAL);
-            }
-            edge_vao.draw_triangles();
+            up.edge_vao.draw_triangles();
             gl::Disable(GL_DEPTH_TEST);
             blend_none();
             gl::check("the edge highlight pass");
@@ -170,14 +215,6 @@ Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
         gl::check("the composite pass");
     }
     gl::Finish();
-    Images out;
-    out.width = w;
-    out.height = h;
-    out.result = result_fb.read(0, 4);
-    out.surface = surface_fb.read(0, 4);
-    out.inv_depth = surface_fb.read(1, 1);
-    out.highlight = highlight_fb.read(0, 4);
-    return out;
 }
 
 }  // namespace el_tools

@@ -41,6 +41,9 @@ struct Scene {
     // fragment shader (as the add-on does); off only to check that this rejects nothing the
     // shader's own visibility test keeps.
     bool edge_depth_test = true;
+    // Edge quads fitted to the side of the line where the band lies (as the add-on draws them);
+    // off only to check that against quads symmetric about the line.
+    bool tight_edge_quads = true;
 };
 
 // Float buffers read back after the last sample, rows bottom-up (GL order).
@@ -57,7 +60,20 @@ public:
     // Compiles surface, edge_highlight and composite from `shader_dir` (programs.json).
     explicit Renderer(const std::string& shader_dir);
     ~Renderer();
+    // Uploads the scene, draws one frame and reads it back.
     Images render(const Scene& scene, const Camera& camera, int samples);
+
+    // A scene's vertex buffers and the render targets of the last size drawn: uploaded once and
+    // drawn in many frames, as the add-on's cached batches are (the pass benchmark's frames).
+    // Keeps a reference to the scene, which must outlive it.
+    class Uploaded;
+    struct UploadedDelete {
+        void operator()(Uploaded* u) const;
+    };
+    using UploadedPtr = std::unique_ptr<Uploaded, UploadedDelete>;
+    UploadedPtr upload(const Scene& scene);
+    // One frame, left in the GPU (glFinish'ed, nothing read back).
+    void draw(Uploaded& uploaded, const Camera& camera, int samples);
 
 private:
     struct Impl;

@@ -1,9 +1,12 @@
-// The edge pass's early depth test (shaders/edge_highlight.vert.glsl): its quads are depth-tested
-// against the surface pass so that hidden pixels never run the fragment shader, with their depth
-// pulled toward the eye past that shader's own visibility bias. It must reject nothing the shader
-// keeps: the highlight buffer is the same with the test on and off, on real meshes that hide
-// edges behind themselves. And since the quads' depth is no longer the edge's, the near plane
-// must still clip the edge line itself (the fragment shader does it now).
+// What the edge pass does to run its fragment shader on fewer pixels (shaders/
+// edge_highlight.vert.glsl) must not change what it draws:
+// - the early depth test: its quads are depth-tested against the surface pass so that hidden
+//   pixels never run the fragment shader, with their depth pulled toward the eye past that
+//   shader's own visibility bias. It must reject nothing the shader keeps: the highlight buffer
+//   is the same with the test on and off, on real meshes that hide edges behind themselves. And
+//   since the quads' depth is no longer the edge's, the near plane must still clip the edge line
+//   itself (the fragment shader does it now);
+// - the quads fitted to the side of the line where the band lies leave out nothing.
 #include "mesh_batches.hpp"
 #include "mesh_io.hpp"
 #include "osmesa_context.hpp"
@@ -27,7 +30,7 @@ el_tools::OsmesaContext& context() {
     return *ctx;
 }
 
-class EdgeDepthTest : public ::testing::Test {
+class EdgeCulling : public ::testing::Test {
 protected:
     void SetUp() override {
         try {
@@ -73,46 +76,70 @@ el_tools::Camera camera(const Framed& f, const dvec3& from, double distance_of_d
     return c;
 }
 
-el_tools::Images render(el_tools::Scene scene, const el_tools::Camera& cam, bool depth_test) {
+el_tools::Images render(el_tools::Scene scene, const el_tools::Camera& cam, bool depth_test, bool tight_quads = true) {
     scene.edge_depth_test = depth_test;
+    scene.tight_edge_quads = tight_quads;
     el_tools::Renderer renderer(EDGELIGHT_SHADER_DIR);
     return renderer.render(scene, cam, 1);
 }
 
-TEST_F(EdgeDepthTest, RejectsNothingTheShaderKeeps) {
-    struct Case {
-        const char* mesh;
-        double radius;    // of the bounding-box diagonal: sub-pixel and several-pixel bands
-        dvec3 from;       // camera direction from the centre
-        double distance;  // of the diagonal
-    };
-    const Case cases[] = {
-        {"fandisk", 0.002, {1.0, -0.85, 0.7}, 1.6},  {"fandisk", 0.02, {-0.3, 1.0, 0.2}, 1.2},
-        {"fandisk", 0.01, {0.05, 0.1, 1.0}, 0.9},    {"cow", 0.003, {1.0, -0.85, 0.7}, 1.5},
-        {"cow", 0.02, {-1.0, 0.1, -0.05}, 1.0},      {"cube", 0.05, {5.2, -4.4, 3.6}, 2.0},
-    };
-    for (const Case& c : cases) {
+struct Case {
+    const char* mesh;
+    double radius;    // of the bounding-box diagonal: sub-pixel and several-pixel bands
+    dvec3 from;       // camera direction from the centre
+    double distance;  // of the diagonal
+};
+const Case kCases[] = {
+    {"fandisk", 0.002, {1.0, -0.85, 0.7}, 1.6}, {"fandisk", 0.02, {-0.3, 1.0, 0.2}, 1.2},
+    {"fandisk", 0.01, {0.05, 0.1, 1.0}, 0.9},   {"fandisk", 0.05, {0.7, 0.6, -0.4}, 0.7},
+    {"cow", 0.003, {1.0, -0.85, 0.7}, 1.5},     {"cow", 0.02, {-1.0, 0.1, -0.05}, 1.0},
+    {"cube", 0.05, {5.2, -4.4, 3.6}, 2.0},      {"cube", 0.2, {0.3, -4.4, 0.2}, 1.0},
+};
+
+// Two ways of drawing on every case: a view that shows edges, and the same highlight buffer but
+// for at most `flips` pixels (any difference) and rounding (1e-4) elsewhere.
+template <class Render>
+void expect_same(const char* what, int flips, Render render_both) {
+    for (const Case& c : kCases) {
         const Framed f = load(c.mesh, c.radius);
         const el_tools::Camera cam = camera(f, c.from, c.distance);
-        const el_tools::Images on = render(f.scene, cam, true), off = render(f.scene, cam, false);
+        const auto [on, off] = render_both(f.scene, cam);
         ASSERT_EQ(on.highlight.size(), off.highlight.size());
         int lit = 0, differ = 0;
-        double worst = 0.0;
+        double worst = 0.0, worst_rounding = 0.0;
         for (size_t i = 0; i < on.highlight.size(); i += 4) {
             double d = 0.0;
             for (int k = 0; k < 4; ++k) d = std::max(d, double(std::abs(on.highlight[i + k] - off.highlight[i + k])));
             worst = std::max(worst, d);
-            differ += d > 1e-6;
+            if (d > 1e-4) ++differ;
+            else worst_rounding = std::max(worst_rounding, d);
             lit += off.highlight[i + 3] > 1e-3f;
         }
-        std::cout << c.mesh << " radius " << c.radius << ": " << lit << " highlight pixels, " << differ
-                  << " differ (worst " << worst << ")\n";
+        std::cout << what << ", " << c.mesh << " radius " << c.radius << ": " << lit << " highlight pixels, " << differ
+                  << " differ by more than 1e-4 (worst " << worst << ")\n";
         EXPECT_GT(lit, 300) << c.mesh << ": the view shows rounded edges";
-        EXPECT_EQ(differ, 0) << c.mesh << ", radius " << c.radius << ": worst difference " << worst;
+        EXPECT_LE(differ, flips) << what << ", " << c.mesh << ", radius " << c.radius << ": worst difference " << worst;
     }
 }
 
-TEST_F(EdgeDepthTest, TheNearPlaneStillClipsTheEdgeLine) {
+TEST_F(EdgeCulling, RejectsNothingTheShaderKeeps) {
+    expect_same("depth test on / off", 0, [](const el_tools::Scene& s, const el_tools::Camera& cam) {
+        return std::pair{render(s, cam, true), render(s, cam, false)};
+    });
+}
+
+// The quads fitted to where the band lies (edge_highlight.vert) leave out no pixel that the
+// quads symmetric about the line light. Both are parallelograms with the same edge_point along
+// each pixel's perpendicular, but interpolated over other triangles its last bits differ, and a
+// few pixels right at a threshold of the shader's visibility or coverage tests flip (0-8 here;
+// a fit without its margin leaves out 50-6000 per view).
+TEST_F(EdgeCulling, FittedQuadsLeaveOutNothing) {
+    expect_same("fitted / symmetric quads", 16, [](const el_tools::Scene& s, const el_tools::Camera& cam) {
+        return std::pair{render(s, cam, true, true), render(s, cam, true, false)};
+    });
+}
+
+TEST_F(EdgeCulling, TheNearPlaneStillClipsTheEdgeLine) {
     // The unit cube's corner nearest the eye cut off by the near plane: its three edges must show
     // no highlight in front of the plane and show it behind (the back faces seen through the cut
     // are farther than the edges, so only the clipping can hide those parts).
