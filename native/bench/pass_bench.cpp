@@ -5,7 +5,8 @@
 // for (glFinish). Real time, and the CPU time of all threads (llvmpipe rasterises on its own):
 // the steadier of the two on a shared machine.
 //
-//   build/native/bench/edgelight_pass_bench [--benchmark_repetitions=3]
+//   build/native/bench/edgelight_pass_bench --benchmark_repetitions=5 \
+//       --benchmark_enable_random_interleaving=true
 #include "mesh_batches.hpp"
 #include "mesh_io.hpp"
 #include "osmesa_context.hpp"
@@ -27,7 +28,9 @@ using glm::dvec3;
 constexpr int kWidth = 1156, kHeight = 852;  // bench/viewport_bench.py's 3D view
 
 struct BenchScene {
-    el_tools::Scene with_edges, surface_only;
+    // surface only; + highlights as the add-on draws them; without the edge pass's early depth
+    // test; with quads symmetric about the edge line instead of fitted to the band.
+    el_tools::Scene surface_only, with_edges, no_depth_test, symmetric_quads;
     el_tools::Camera camera;
 };
 
@@ -83,8 +86,10 @@ BenchScene make(const el_tools::LoadedMesh& mesh, float radius, double roughness
     s.with_edges.material.radius = radius;
     s.with_edges.material.shininess = shininess(roughness);
     s.with_edges.suns.push_back({glm::normalize(dvec3(-0.4, -0.7, 0.6)), dvec3(3.0)});
-    s.surface_only = s.with_edges;
+    s.surface_only = s.no_depth_test = s.symmetric_quads = s.with_edges;
     s.surface_only.edges = {};
+    s.no_depth_test.edge_depth_test = false;
+    s.symmetric_quads.tight_edge_quads = false;
     dvec3 lo, hi;
     bounds(mesh, lo, hi);
     s.camera.target = 0.5 * (lo + hi);
@@ -132,14 +137,15 @@ int main(int argc, char** argv) {
     scenes.emplace_back("fandisk_array_100k", make(repeated(fandisk, 2, step), 0.004f, 0.25, 2.0 * step, 1.6));
     scenes.emplace_back("fandisk", make(fandisk, 0.004f, 0.25, step / 1.3, 2.5));
     for (const auto& [name, s] : scenes) {
-        benchmark::RegisterBenchmark((name + "/surface").c_str(), frames, &s.surface_only, &s.camera)
-            ->Unit(benchmark::kMillisecond)
-            ->UseRealTime()
-            ->MeasureProcessCPUTime();
-        benchmark::RegisterBenchmark((name + "/surface+highlights").c_str(), frames, &s.with_edges, &s.camera)
-            ->Unit(benchmark::kMillisecond)
-            ->UseRealTime()
-            ->MeasureProcessCPUTime();
+        for (const auto& [variant, scene] : {std::pair{"surface", &s.surface_only},
+                                             {"surface+highlights", &s.with_edges},
+                                             {"no_early_depth_test", &s.no_depth_test},
+                                             {"symmetric_quads", &s.symmetric_quads}}) {
+            benchmark::RegisterBenchmark((name + "/" + variant).c_str(), frames, scene, &s.camera)
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime()
+                ->MeasureProcessCPUTime();
+        }
     }
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
