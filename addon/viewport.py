@@ -233,13 +233,13 @@ class ViewportState:
 
     def _maybe_count_culled(self, camera, highlights):
         """The counts are statistics and cost a numpy pass over every edge (about 1 s for 750k
-        edges here): while the view keeps moving they are refreshed only after 10x their own
-        cost has passed (at least 0.25 s), so they take at most ~10% of the time; not at all
+        edges here): while the view keeps moving they are refreshed only after 20x their own
+        cost has passed (at least 0.5 s), so they take at most ~5% of the time; not at all
         when no edge is drawn."""
         now = time.monotonic()
         if not highlights:
             self.counters.edges_drawn = self.counters.edges_culled = 0
-        elif now - self.counted_at >= max(0.25, 10.0 * self.count_cost):
+        elif now - self.counted_at >= max(0.5, 20.0 * self.count_cost):
             self._count_culled(camera)
             self.counted_at = time.monotonic()
             self.count_cost = self.counted_at - now

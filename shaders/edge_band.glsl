@@ -14,8 +14,8 @@
 #define EL_EDGE_METHOD EL_METHOD_PARTIAL
 #endif
 
-/* Edge quads fitted to where the band lies (edge_highlight.vert); 0 only to test that against
- * quads symmetric about the line. */
+/* Edge quads fitted to where the band lies (edge_highlight.vert); false only to test that
+ * against quads symmetric about the line. */
 #ifndef EL_TIGHT_QUADS
 #define EL_TIGHT_QUADS true
 #endif

@@ -37,8 +37,9 @@ vec2 el_band_px(vec3 at, vec4 clip_at, vec2 across)
  * quad's depth at an end is that end pulled toward the eye by more than the fragment shader's
  * own visibility bias at any pixel of the quad there, so that exact test still decides every
  * pixel it could keep: the bias (edge_highlight.frag) with |across| at its largest (half_px),
- * the faces' cosines halved (the view ray turns along the edge) and a factor 2. Returns the NDC depth, or
- * -1 (the near plane: nothing is rejected) when the pulled point would reach the near plane. */
+ * the faces' cosines halved (the view ray turns along the edge) and a factor 2. Returns the NDC
+ * depth, or -1 (the near plane: nothing is rejected) when the pulled point would reach the near
+ * plane. */
 float el_pulled_depth(vec3 at, float half_px)
 {
   bool persp = frame.eye.w > 0.5;
