@@ -66,15 +66,6 @@ el_tools::LoadedMesh repeated(const el_tools::LoadedMesh& one, int side, double 
     return m;
 }
 
-void bounds(const el_tools::LoadedMesh& m, dvec3& lo, dvec3& hi) {
-    lo = dvec3(1e300);
-    hi = dvec3(-1e300);
-    for (size_t i = 0; i < m.positions.size(); ++i) {
-        lo[int(i % 3)] = std::min(lo[int(i % 3)], double(m.positions[i]));
-        hi[int(i % 3)] = std::max(hi[int(i % 3)], double(m.positions[i]));
-    }
-}
-
 // Blender's roughness -> Blinn exponent (addon/materials.py).
 float shininess(double roughness) { return float(2.0 / std::pow(roughness, 4.0) - 2.0); }
 
@@ -90,13 +81,12 @@ BenchScene make(const el_tools::LoadedMesh& mesh, float radius, double roughness
     s.surface_only.edges = {};
     s.no_depth_test.edge_depth_test = false;
     s.symmetric_quads.tight_edge_quads = false;
-    dvec3 lo, hi;
-    bounds(mesh, lo, hi);
-    s.camera.target = 0.5 * (lo + hi);
+    const el_tools::Box box = el_tools::bounding_box(mesh.positions);
+    s.camera.target = box.centre();
     s.camera.eye = s.camera.target + distance * size * glm::normalize(dvec3(1.0, -0.85, 0.7));
     s.camera.width = kWidth;
     s.camera.height = kHeight;
-    const double dist = glm::length(s.camera.eye - s.camera.target), diag = glm::length(hi - lo);
+    const double dist = glm::length(s.camera.eye - s.camera.target), diag = box.diagonal();
     s.camera.clip_end = dist + diag;
     s.camera.clip_start = std::max(0.01, dist - diag);
     return s;
@@ -131,9 +121,9 @@ int main(int argc, char** argv) {
     scenes.emplace_back("cube_grid_100k", make(cube_grid(cubes), 0.02f, 0.3, grid_size, 2.2));
     const std::string dir = EDGELIGHT_DEFAULT_MESH_DIR;
     const el_tools::LoadedMesh fandisk = el_tools::load_mesh(dir + "/fandisk.off");
-    dvec3 lo, hi;
-    bounds(fandisk, lo, hi);
-    const double step = 1.3 * std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    const el_tools::Box box = el_tools::bounding_box(fandisk.positions);
+    const dvec3 extent = box.hi - box.lo;
+    const double step = 1.3 * std::max({extent.x, extent.y, extent.z});
     scenes.emplace_back("fandisk_array_100k", make(repeated(fandisk, 2, step), 0.004f, 0.25, 2.0 * step, 1.6));
     scenes.emplace_back("fandisk", make(fandisk, 0.004f, 0.25, step / 1.3, 2.5));
     for (const auto& [name, s] : scenes) {

@@ -123,13 +123,9 @@ Args parse(int argc, char** argv) {
 
 // Frames the bounding box when no eye or target is given; clip planes from its size.
 el_tools::Camera camera_for(const Args& a, const std::vector<float>& p) {
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-    for (size_t i = 0; i < p.size(); ++i) {
-        lo[int(i % 3)] = std::min(lo[int(i % 3)], double(p[i]));
-        hi[int(i % 3)] = std::max(hi[int(i % 3)], double(p[i]));
-    }
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double diag = glm::length(hi - lo);
+    const el_tools::Box box = el_tools::bounding_box(p);
+    const glm::dvec3 centre = box.centre();
+    const double diag = box.diagonal();
     el_tools::Camera c;
     c.width = a.width;
     c.height = a.height;

@@ -2,7 +2,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace el_tools {
@@ -90,6 +92,15 @@ std::vector<float> frame_data(const Camera& camera, const glm::dmat4& projection
     }
     for (const auto* a : {&color, &position, &direction, &spot}) out.insert(out.end(), a->begin(), a->end());
     return out;
+}
+
+Box bounding_box(const std::vector<float>& xyz) {
+    Box b{glm::dvec3(std::numeric_limits<double>::infinity()), glm::dvec3(-std::numeric_limits<double>::infinity())};
+    for (size_t i = 0; i < xyz.size(); ++i) {
+        b.lo[int(i % 3)] = std::min(b.lo[int(i % 3)], double(xyz[i]));
+        b.hi[int(i % 3)] = std::max(b.hi[int(i % 3)], double(xyz[i]));
+    }
+    return b;
 }
 
 }  // namespace el_tools

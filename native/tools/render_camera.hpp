@@ -38,6 +38,14 @@ glm::dvec2 jitter(int sample);
 // projection moved by (dx, dy) pixels, as frame.jittered_projection().
 glm::dmat4 jittered_projection(const glm::dmat4& projection, int width, int height, glm::dvec2 d);
 
+// Axis-aligned bounds of xyz triples (what cameras frame).
+struct Box {
+    glm::dvec3 lo, hi;
+    glm::dvec3 centre() const { return 0.5 * (lo + hi); }
+    double diagonal() const { return glm::length(hi - lo); }
+};
+Box bounding_box(const std::vector<float>& xyz);
+
 // The FrameData block's floats (std140: 308 of them).
 std::vector<float> frame_data(const Camera& camera, const glm::dmat4& projection, const std::vector<Sun>& suns,
                               const glm::dvec3& ambient);

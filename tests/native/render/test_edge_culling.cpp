@@ -9,7 +9,7 @@
 // - the quads fitted to the side of the line where the band lies leave out nothing.
 #include "mesh_batches.hpp"
 #include "mesh_io.hpp"
-#include "osmesa_context.hpp"
+#include "offscreen_gl.hpp"
 #include "render_passes.hpp"
 
 #include <gtest/gtest.h>
@@ -24,22 +24,7 @@ namespace {
 
 using glm::dvec3;
 
-el_tools::OsmesaContext& context() {
-    static std::unique_ptr<el_tools::OsmesaContext> ctx;
-    if (!ctx) ctx = std::make_unique<el_tools::OsmesaContext>();
-    return *ctx;
-}
-
-class EdgeCulling : public ::testing::Test {
-protected:
-    void SetUp() override {
-        try {
-            context();
-        } catch (const std::exception& e) {
-            FAIL() << "no offscreen GL: " << e.what();  // a failure, never a silent skip
-        }
-    }
-};
+class EdgeCulling : public OffscreenGlTest {};
 
 struct Framed {
     el_tools::Scene scene;
@@ -52,13 +37,9 @@ Framed load(const std::string& name, double radius_of_diag) {
     Framed f;
     f.scene.surface = el_tools::surface_corners(mesh, 30.0f);
     f.scene.edges = el_tools::choose_edges(mesh, 30.0f);
-    dvec3 lo(1e300), hi(-1e300);
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
-        lo[int(i % 3)] = std::min(lo[int(i % 3)], double(mesh.positions[i]));
-        hi[int(i % 3)] = std::max(hi[int(i % 3)], double(mesh.positions[i]));
-    }
-    f.centre = 0.5 * (lo + hi);
-    f.diag = glm::length(hi - lo);
+    const el_tools::Box box = el_tools::bounding_box(mesh.positions);
+    f.centre = box.centre();
+    f.diag = box.diagonal();
     f.scene.material.radius = float(radius_of_diag * f.diag);
     f.scene.suns.push_back({glm::normalize(dvec3(-0.4, -0.7, 0.6)), dvec3(3.0)});
     return f;

@@ -2,22 +2,16 @@
 // the declarations shader_assembly.cpp generates: the bodies need nothing of Blender's own
 // preamble, and a declaration added to programs.json without its use (or the reverse) fails here.
 #include "gl_objects.hpp"
-#include "osmesa_context.hpp"
+#include "offscreen_gl.hpp"
 #include "shader_assembly.hpp"
 
 #include <gtest/gtest.h>
 
-#include <memory>
-
 namespace {
 
-TEST(ShaderAssembly, EveryProgramCompilesAndLinks) {
-    std::unique_ptr<el_tools::OsmesaContext> ctx;
-    try {
-        ctx = std::make_unique<el_tools::OsmesaContext>();
-    } catch (const std::exception& e) {
-        FAIL() << "no offscreen GL: " << e.what();
-    }
+class ShaderAssembly : public OffscreenGlTest {};
+
+TEST_F(ShaderAssembly, EveryProgramCompilesAndLinks) {
     const auto names = el_tools::program_names(EDGELIGHT_SHADER_DIR);
     ASSERT_GE(names.size(), 4u);  // surface, edge_highlight, composite, line
     for (const auto& name : names) {
@@ -25,7 +19,7 @@ TEST(ShaderAssembly, EveryProgramCompilesAndLinks) {
     }
 }
 
-TEST(ShaderAssembly, InterfaceFollowsProgramsJson) {
+TEST_F(ShaderAssembly, InterfaceFollowsProgramsJson) {
     const auto p = el_tools::assemble_program(EDGELIGHT_SHADER_DIR, "edge_highlight");
     // Flat outputs stay flat (the short-edge colour comes from one vertex), slots in list order.
     EXPECT_NE(p.vertex.find("flat vec4 edge_color;"), std::string::npos);

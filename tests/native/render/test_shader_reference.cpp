@@ -5,7 +5,7 @@
 // bisector of the top and front faces, so that edge's arc holds the half vector and glints.
 #include "mesh_batches.hpp"
 #include "mesh_io.hpp"
-#include "osmesa_context.hpp"
+#include "offscreen_gl.hpp"
 #include "render_passes.hpp"
 
 #include <edgelight/edgelight.h>
@@ -60,15 +60,8 @@ CubeScene cube(int width, int height, float radius) {
     return s;
 }
 
-// The GL context for this process; a machine without OSMesa fails here, saying so.
-el_tools::OsmesaContext& context() {
-    static std::unique_ptr<el_tools::OsmesaContext> ctx;
-    if (!ctx) ctx = std::make_unique<el_tools::OsmesaContext>();
-    return *ctx;
-}
-
 el_tools::Images render(const CubeScene& s) {
-    context();
+    offscreen_context();
     el_tools::Renderer renderer(EDGELIGHT_SHADER_DIR);
     return renderer.render(s.scene, s.camera, 1);
 }
@@ -147,23 +140,14 @@ Agreement compare(const CubeScene& s, const el_tools::Images& img, float shinine
     return out;
 }
 
-class ShaderReference : public ::testing::Test {
-protected:
-    void SetUp() override {
-        try {
-            context();
-        } catch (const std::exception& e) {
-            FAIL() << "no offscreen GL: " << e.what();  // a failure, never a silent skip
-        }
-    }
-};
+class ShaderReference : public OffscreenGlTest {};
 
 TEST_F(ShaderReference, HighlightColourAndWeightMatchTheDoubleReference) {
     const CubeScene s = cube(640, 480, 0.05f);  // a few pixels wide: many pixels to compare
     ASSERT_EQ(s.scene.edges.size(), 12u);
     const el_tools::Images img = render(s);
     const Agreement got = compare(s, img, s.scene.material.shininess, s.scene.material.radius);
-    std::cout << "checked " << got.checked << " pixels on " << context().description() << ": worst colour error "
+    std::cout << "checked " << got.checked << " pixels on " << offscreen_context().description() << ": worst colour error "
               << got.worst_rel << " (relative), worst weight error " << got.worst_weight << "\n";
     EXPECT_GT(got.checked, 100);
     EXPECT_LT(got.worst_rel, kRelativeTolerance);
