@@ -7,9 +7,10 @@ Scenes: the samples, and generated scenes of 100k and 1M triangles: grids of cub
 cube edge rounded (a stress case: one rounded edge per triangle), and arrays of the fandisk part
 (linked duplicates, rounded at its creases). EDGELIGHT_BENCH_SCENES=cube,100k,parts100k picks
 scenes. Modes: 'orbit' turns the view 1 degree before every draw (a new image each
-time), with highlights off (surface only), on, and off with ink lines (silhouettes, creases
-above 45 degrees, borders: a native view update and new silhouette batches per draw); 'static'
-redraws an unchanged view (the cached image). Times come from bpy.ops.wm.redraw_timer, best of REPEAT runs.
+time), with highlights off (surface only), on, on with EDGELIGHT_EDGE_FLOOR (the edge pass's
+quads with a fragment shader that does next to nothing: its cost before any shading), and off
+with ink lines (silhouettes, creases above 45 degrees, borders: a native view update and new
+silhouette batches per draw); 'static' redraws an unchanged view (the cached image). Times come from bpy.ops.wm.redraw_timer, best of REPEAT runs.
 """
 import math
 import os
@@ -24,6 +25,7 @@ ARGS = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 OUT = ARGS[0] if ARGS else os.path.join(ROOT, "out", "viewport_bench.md")
 FRAMES = 10
 REPEAT = 5
+BIG_REPEAT = 3  # the 1M scenes: runs of 3 draws
 # EDGELIGHT_BENCH_SCENES=cube,100k,parts1000k: only those (samples by name; grids, part arrays).
 ONLY = [x for x in os.environ.get("EDGELIGHT_BENCH_SCENES", "").split(",") if x]
 rows = []
@@ -124,14 +126,20 @@ def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
         for label, highlights, lines, orbit in (("surface only, orbit", False, False, True),
                                                 ("surface + lines, orbit", False, True, True),
                                                 ("surface + highlights, orbit", True, False, True),
+                                                ("edge quads, no shading, orbit", "floor", False, True),
                                                 ("static redraw (cache hit)", True, False, False)):
-            scene.edgelight.highlights = highlights
+            scene.edgelight.highlights = bool(highlights)
             scene.edgelight.use_lines = lines
+            if highlights == "floor":
+                os.environ["EDGELIGHT_EDGE_FLOOR"] = "1"
+            else:
+                os.environ.pop("EDGELIGHT_EDGE_FLOOR", None)
             draw_ms(True, 1, 1)  # warm up: extraction, batches, shaders; a new mode's first image
             rv3d.view_rotation = start
             if not orbit:
                 draw_ms(False, 1, 1)  # the image of the start view, which the static runs redraw
             result[label] = min(result.get(label, float("inf")), draw_ms(orbit, frames, 1))
+    os.environ.pop("EDGELIGHT_EDGE_FLOOR", None)
     import edgelight
     c = edgelight.viewport.last_state.counters
     tris = sum(len(inst.mesh.corner_pos) // 3 for inst in edgelight.viewport.last_state.instances)
@@ -151,21 +159,21 @@ def steps():
         if not ONLY or f"{tris // 1000}k" in ONLY:
             size = grid_scene(tris)
             yield
-            measure(f"{tris // 1000}k-triangle cube grid", distance=size * 2.2, frames=3 if big else FRAMES, repeat=1 if big else REPEAT)
+            measure(f"{tris // 1000}k-triangle cube grid", distance=size * 2.2, frames=3 if big else FRAMES, repeat=BIG_REPEAT if big else REPEAT)
         if not ONLY or f"parts{tris // 1000}k" in ONLY:
             size = part_array(tris)
             yield
-            measure(f"{tris // 1000}k-triangle fandisk array", distance=size * 1.6, frames=3 if big else FRAMES, repeat=1 if big else REPEAT)
+            measure(f"{tris // 1000}k-triangle fandisk array", distance=size * 1.6, frames=3 if big else FRAMES, repeat=BIG_REPEAT if big else REPEAT)
     _, _, region = view3d()
     lines = [f"Blender {bpy.app.version_string}, 3D view {region.width}x{region.height} px, Rendered shading, "
-             f"1 viewport sample; ms per view_draw, best of {REPEAT} runs of {FRAMES} draws, the modes taking turns (the 1M scenes: one run of 3).", "",
-             "| scene | triangles | edges drawn / culled | surface only, orbit | surface + lines, orbit | surface + highlights, orbit | static redraw | lines add | highlights add | static / surface only |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             f"1 viewport sample; ms per view_draw, best of {REPEAT} runs of {FRAMES} draws, the modes taking turns (the 1M scenes: best of {BIG_REPEAT} runs of 3).", "",
+             "| scene | triangles | edges drawn / culled | surface only, orbit | surface + lines, orbit | surface + highlights, orbit | edge quads, no shading | static redraw | lines add | highlights add | quads alone add | static / surface only |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for name, tris, drawn, culled, r in rows:
-        s, ln, h, st = (r["surface only, orbit"], r["surface + lines, orbit"], r["surface + highlights, orbit"],
-                        r["static redraw (cache hit)"])
-        lines.append(f"| {name} | {tris:,} | {drawn:,} / {culled:,} | {s:.1f} | {ln:.1f} | {h:.1f} | {st:.1f} | "
-                     f"{100 * (ln / s - 1):.0f}% | {100 * (h / s - 1):.0f}% | {st / s:.2f} |")
+        s, ln, h, fl, st = (r["surface only, orbit"], r["surface + lines, orbit"], r["surface + highlights, orbit"],
+                            r["edge quads, no shading, orbit"], r["static redraw (cache hit)"])
+        lines.append(f"| {name} | {tris:,} | {drawn:,} / {culled:,} | {s:.1f} | {ln:.1f} | {h:.1f} | {fl:.1f} | {st:.1f} | "
+                     f"{100 * (ln / s - 1):.0f}% | {100 * (h / s - 1):.0f}% | {100 * (fl / s - 1):.0f}% | {st / s:.2f} |")
     os.makedirs(os.path.dirname(OUT), exist_ok=True)
     with open(OUT, "w") as f:
         f.write("\n".join(lines) + "\n")

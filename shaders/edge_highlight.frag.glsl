@@ -1,6 +1,18 @@
 /* Edge highlight pass: the rounded edge's shading integrated over the part of its arc this pixel
  * sees (highlight_arc.glsl), weighted by the pixel's coverage of the projected band, depth-tested
  * against the surface pass. Output is premultiplied (W Is, W). */
+#ifdef EL_EDGE_FLOOR
+/* Benchmark only (passes/frame.py, EDGELIGHT_EDGE_FLOOR): the same quads, vertex shader and
+ * depth test, and a fragment shader that does next to nothing: what the pass costs before any
+ * shading (BENCHMARKS.md). It reads every input the pass binds, so the same uniforms can be set,
+ * and writes an invisible 1e-20 of them. */
+void main()
+{
+  vec4 inputs = vec4(edge_point, edge_radius) + table_params + base_color + spec_color + tint +
+                texelFetch(cos_power_table, ivec2(0), 0).r + texelFetch(surface_depth, ivec2(0), 0).r;
+  out_color = inputs * 1e-20;
+}
+#else
 void main()
 {
   vec2 pc = gl_FragCoord.xy;
@@ -105,3 +117,4 @@ void main()
   }
   out_color = result;
 }
+#endif

@@ -25,6 +25,13 @@ def edge_method():
     return EDGE_METHODS.get(os.environ.get("EDGELIGHT_EDGE_METHOD", "partial"), 0.0)
 
 
+def edge_floor():
+    """EDGELIGHT_EDGE_FLOOR=1: the edge pass's quads with a fragment shader that does next to
+    nothing (shaders/edge_highlight.frag.glsl), for the viewport benchmark's floor. Not a user
+    setting: it draws no highlights."""
+    return os.environ.get("EDGELIGHT_EDGE_FLOOR") == "1"
+
+
 @dataclass
 class Camera:
     view: np.ndarray          # world -> view, 4x4 row-major
@@ -183,7 +190,10 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False):
 def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
     tex, params = table.table()
     # The table layout and the edge method are fixed in the program (highlight_arc.glsl).
-    shader = shader_lib.get("edge_highlight", {"EL_TABLE_LAYOUT": int(params[0]), "EL_EDGE_METHOD": int(edge_method())})
+    defines = {"EL_TABLE_LAYOUT": int(params[0]), "EL_EDGE_METHOD": int(edge_method())}
+    if edge_floor():
+        defines["EL_EDGE_FLOOR"] = 1
+    shader = shader_lib.get("edge_highlight", defines)
     with targets.highlight_fb.bind():
         targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
         gpu.state.blend_set('ALPHA_PREMULT')

@@ -29,8 +29,9 @@ constexpr int kWidth = 1156, kHeight = 852;  // bench/viewport_bench.py's 3D vie
 
 struct BenchScene {
     // surface only; + highlights as the add-on draws them; without the edge pass's early depth
-    // test; with quads symmetric about the edge line instead of fitted to the band.
-    el_tools::Scene surface_only, with_edges, no_depth_test, symmetric_quads;
+    // test; with quads symmetric about the edge line instead of fitted to the band; with a
+    // fragment shader that does next to nothing (the pass's cost before any shading).
+    el_tools::Scene surface_only, with_edges, no_depth_test, symmetric_quads, floor;
     el_tools::Camera camera;
 };
 
@@ -77,7 +78,8 @@ BenchScene make(const el_tools::LoadedMesh& mesh, float radius, double roughness
     s.with_edges.material.radius = radius;
     s.with_edges.material.shininess = shininess(roughness);
     s.with_edges.suns.push_back({glm::normalize(dvec3(-0.4, -0.7, 0.6)), dvec3(3.0)});
-    s.surface_only = s.no_depth_test = s.symmetric_quads = s.with_edges;
+    s.surface_only = s.no_depth_test = s.symmetric_quads = s.floor = s.with_edges;
+    s.floor.edge_floor = true;
     s.surface_only.edges = {};
     s.no_depth_test.edge_depth_test = false;
     s.symmetric_quads.tight_edge_quads = false;
@@ -125,12 +127,14 @@ int main(int argc, char** argv) {
     const dvec3 extent = box.hi - box.lo;
     const double step = 1.3 * std::max({extent.x, extent.y, extent.z});
     scenes.emplace_back("fandisk_array_100k", make(repeated(fandisk, 2, step), 0.004f, 0.25, 2.0 * step, 1.6));
+    scenes.emplace_back("fandisk_array_830k", make(repeated(fandisk, 4, step), 0.004f, 0.25, 4.0 * step, 1.6));
     scenes.emplace_back("fandisk", make(fandisk, 0.004f, 0.25, step / 1.3, 2.5));
     for (const auto& [name, s] : scenes) {
         for (const auto& [variant, scene] : {std::pair{"surface", &s.surface_only},
                                              {"surface+highlights", &s.with_edges},
                                              {"no_early_depth_test", &s.no_depth_test},
-                                             {"symmetric_quads", &s.symmetric_quads}}) {
+                                             {"symmetric_quads", &s.symmetric_quads},
+                                             {"floor", &s.floor}}) {
             benchmark::RegisterBenchmark((name + "/" + variant).c_str(), frames, scene, &s.camera)
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime()

@@ -55,7 +55,7 @@ void blend_additive_premult() {
 struct Renderer::Impl {
     std::string dir;
     Program surface, composite;
-    std::map<std::pair<int, bool>, std::unique_ptr<Program>> edge_programs;  // per edge method, quad fit
+    std::map<std::tuple<int, bool, bool>, std::unique_ptr<Program>> edge_programs;  // method, quad fit, floor
     glm::vec4 table_params{0.0f};
     std::unique_ptr<Texture> table = highlight_table(table_params);
     UniformBuffer ubo;
@@ -66,14 +66,17 @@ struct Renderer::Impl {
         : dir(shader_dir), surface(assemble_program(dir, "surface")), composite(assemble_program(dir, "composite")) {}
 
     // The edge program of one method, with the table layout fixed as the add-on fixes it
-    // (passes/frame.py: defines, not uniforms). tight_quads false: the test variant.
-    const Program& edge(int method, bool tight_quads) {
-        auto& p = edge_programs[{method, tight_quads}];
+    // (passes/frame.py: defines, not uniforms). tight_quads false: the test variant; floor: the
+    // benchmark's shading-free variant.
+    const Program& edge(int method, bool tight_quads, bool floor) {
+        auto& p = edge_programs[{method, tight_quads, floor}];
         if (!p) {
-            p = std::make_unique<Program>(assemble_program(dir, "edge_highlight",
-                                                           {{"EL_TABLE_LAYOUT", std::to_string(int(table_params.x))},
-                                                            {"EL_EDGE_METHOD", std::to_string(method)},
-                                                            {"EL_TIGHT_QUADS", tight_quads ? "true" : "false"}}));
+            std::vector<std::pair<std::string, std::string>> defines = {
+                {"EL_TABLE_LAYOUT", std::to_string(int(table_params.x))},
+                {"EL_EDGE_METHOD", std::to_string(method)},
+                {"EL_TIGHT_QUADS", tight_quads ? "true" : "false"}};
+            if (floor) defines.emplace_back("EL_EDGE_FLOOR", "1");
+            p = std::make_unique<Program>(assemble_program(dir, "edge_highlight", defines));
         }
         return *p;
     }
@@ -122,7 +125,7 @@ public:
 void Renderer::UploadedDelete::operator()(Uploaded* u) const { delete u; }
 
 Renderer::UploadedPtr Renderer::upload(const Scene& scene) {
-    return UploadedPtr(new Uploaded(scene, impl_->surface, impl_->edge(scene.edge_method, scene.tight_edge_quads)));
+    return UploadedPtr(new Uploaded(scene, impl_->surface, impl_->edge(scene.edge_method, scene.tight_edge_quads, scene.edge_floor)));
 }
 
 Images Renderer::render(const Scene& scene, const Camera& camera, int samples) {
@@ -148,7 +151,7 @@ void Renderer::draw(Uploaded& up, const Camera& camera, int samples) {
     auto &surface_fb = t.surface_fb, &highlight_fb = t.highlight_fb, &line_fb = t.line_fb, &result_fb = t.result_fb;
     auto &surface_color = t.surface_color, &surface_depth = t.surface_depth, &highlight = t.highlight,
          &lines = t.lines;
-    const Program& edge = r.edge(scene.edge_method, scene.tight_edge_quads);
+    const Program& edge = r.edge(scene.edge_method, scene.tight_edge_quads, scene.edge_floor);
     const Material& m = scene.material;
     gl::Disable(GL_CULL_FACE);  // Blender shows both sides; the surface shader flips back faces
 

@@ -44,6 +44,9 @@ struct Scene {
     // Edge quads fitted to the side of the line where the band lies (as the add-on draws them);
     // off only to check that against quads symmetric about the line.
     bool tight_edge_quads = true;
+    // Benchmark only: the edge pass with a fragment shader that does next to nothing
+    // (EL_EDGE_FLOOR), what its quads cost before any shading.
+    bool edge_floor = false;
 };
 
 // Float buffers read back after the last sample, rows bottom-up (GL order).

@@ -158,3 +158,32 @@ TEST_F(EdgeCulling, TheNearPlaneStillClipsTheEdgeLine) {
 }
 
 }  // namespace
+
+namespace {
+
+// The benchmarks' floor variant (EL_EDGE_FLOOR, Scene::edge_floor: the same quads with a fragment
+// shader that does next to nothing) builds, draws the same quads, and shows nothing: the
+// benchmark's "quads alone" column is the pass's cost with the shading left out, not a broken
+// program's. Its writes (1e-20 of its inputs) must land where the real pass lights pixels.
+TEST_F(EdgeCulling, FloorVariantDrawsTheQuadsAndShowsNothing) {
+    const Framed f = load("fandisk", 0.01);
+    const el_tools::Camera cam = camera(f, {1.0, -0.85, 0.7}, 1.6);
+    el_tools::Scene floor = f.scene;
+    floor.edge_floor = true;
+    el_tools::Renderer renderer(EDGELIGHT_SHADER_DIR);
+    const el_tools::Images real = renderer.render(f.scene, cam, 1), quads = renderer.render(floor, cam, 1);
+    int lit = 0, lit_written = 0;
+    float brightest = 0.0f;
+    for (size_t i = 0; i < quads.highlight.size(); i += 4) {
+        for (int k = 0; k < 4; ++k) brightest = std::max(brightest, std::abs(quads.highlight[i + k]));
+        if (real.highlight[i + 3] > 1e-3f) {
+            ++lit;
+            lit_written += quads.highlight[i + 3] != 0.0f;
+        }
+    }
+    EXPECT_GT(lit, 300);
+    EXPECT_LT(brightest, 1e-12f) << "the floor variant must not show";
+    EXPECT_GT(lit_written, lit * 9 / 10) << "the floor variant must draw the same quads";
+}
+
+}  // namespace
