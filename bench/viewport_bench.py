@@ -123,17 +123,14 @@ def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
     # machine then hits all modes alike instead of one mode's whole run. Every run starts from the
     # same view (orbiting, each run would otherwise see the model from elsewhere).
     for round_ in range(repeat):
-        for label, highlights, lines, orbit in (("surface only, orbit", False, False, True),
-                                                ("surface + lines, orbit", False, True, True),
-                                                ("surface + highlights, orbit", True, False, True),
-                                                ("edge quads, no shading, orbit", "floor", False, True),
-                                                ("static redraw (cache hit)", True, False, False)):
-            scene.edgelight.highlights = bool(highlights)
+        for label, highlights, floor, lines, orbit in (("surface only, orbit", False, False, False, True),
+                                                       ("surface + lines, orbit", False, False, True, True),
+                                                       ("surface + highlights, orbit", True, False, False, True),
+                                                       ("edge quads, no shading, orbit", True, True, False, True),
+                                                       ("static redraw (cache hit)", True, False, False, False)):
+            scene.edgelight.highlights = highlights
             scene.edgelight.use_lines = lines
-            if highlights == "floor":
-                os.environ["EDGELIGHT_EDGE_FLOOR"] = "1"
-            else:
-                os.environ.pop("EDGELIGHT_EDGE_FLOOR", None)
+            os.environ["EDGELIGHT_EDGE_FLOOR"] = "1" if floor else "0"
             draw_ms(True, 1, 1)  # warm up: extraction, batches, shaders; a new mode's first image
             rv3d.view_rotation = start
             if not orbit:
