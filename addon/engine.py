@@ -1,12 +1,27 @@
-"""The EDGELIGHT RenderEngine: a thin layer that gathers the scene and runs the passes."""
+"""The EDGELIGHT RenderEngine: a thin layer that gathers the scene and runs the passes.
+
+Every failure is loud: whatever goes wrong in render, view_update or view_draw becomes an ERROR
+report naming it. An ERROR report from render() is what makes Blender treat the frame as failed:
+it is not saved, and `blender -b -f` exits with code 1 (docs/addon.md, "When a render fails").
+"""
+import traceback
+
 import bpy
+import gpu
 import numpy as np
 
 from . import compat, lines, native, scene_sync, viewport
 from .passes import frame, toon
 
-# The last final render's buffers, stats and reports, for tests and the benchmark script.
+# Tests set `capture = True` to receive the last render's record (pixels, pass buffers, camera,
+# scene, reports) in `last_render`, per view layer in `last_render["layers"]`. Otherwise a
+# render keeps nothing once it ends.
+capture = False
 last_render = {}
+
+
+class RenderRefused(Exception):
+    """The frame cannot be rendered as asked; the message says why and what to do."""
 
 
 def load_library():
@@ -17,19 +32,68 @@ def load_library():
         return None, str(e)
 
 
-def camera_for_render(depsgraph, width, height):
-    scene = depsgraph.scene
-    cam = scene.camera
-    if cam is None:
-        return None
-    cam = cam.evaluated_get(depsgraph)
-    r = scene.render
-    proj = cam.calc_matrix_camera(depsgraph, x=width, y=height, scale_x=r.pixel_aspect_x, scale_y=r.pixel_aspect_y)
+def render_region(r, full_w, full_h):
+    """(x, y, width, height) of the pixels Blender asks for: the render region when one is set
+    (bounds truncated to whole pixels, as Blender's render pipeline does), else the frame."""
+    if not r.use_border:
+        return 0, 0, full_w, full_h
+    f = np.float32  # single-precision products, as Blender's pipeline computes them
+    x0, x1 = int(f(r.border_min_x) * f(full_w)), int(f(r.border_max_x) * f(full_w))
+    y0, y1 = int(f(r.border_min_y) * f(full_h)), int(f(r.border_max_y) * f(full_h))
+    return x0, y0, max(0, x1 - x0), max(0, y1 - y0)
+
+
+def region_projection(projection, full_w, full_h, region):
+    """The full frame's projection restricted to a region of it: the region's pixels keep their
+    place and size in the frame (same pixels per unit), only the window moves."""
+    x0, y0, w, h = region
+    t = np.eye(4)
+    t[0, 0], t[0, 3] = full_w / w, (full_w - 2.0 * x0) / w - 1.0
+    t[1, 1], t[1, 3] = full_h / h, (full_h - 2.0 * y0) / h - 1.0
+    return t @ projection
+
+
+def camera_world(cam):
+    """The camera's matrix without its scale, as Blender's own engines use it; refuses a
+    transform that has no orientation (scaled to zero, or NaN)."""
     world = np.array(cam.matrix_world, dtype=np.float64)
-    forward = -world[:3, 2] / np.linalg.norm(world[:3, 2])
-    return frame.Camera(view=np.linalg.inv(world), projection=np.array(proj, dtype=np.float64),
-                        eye=tuple(world[:3, 3]), view_dir=tuple(forward),
-                        orthographic=cam.data.type == 'ORTHO', width=width, height=height)
+    axes = world[:3, :3]
+    norms = np.linalg.norm(axes, axis=0)
+    if not np.all(np.isfinite(world)) or norms.min() < 1e-12:
+        raise RenderRefused(f"camera '{cam.name}' has a singular transform (scale "
+                            f"{tuple(round(s, 6) for s in cam.matrix_world.to_scale())}); give it a non-zero scale")
+    world[:3, :3] = axes / norms
+    if abs(np.linalg.det(world[:3, :3])) < 1e-6:
+        raise RenderRefused(f"camera '{cam.name}' has a degenerate transform (its axes are parallel)")
+    return world
+
+
+def camera_for_render(depsgraph, full_w, full_h, region):
+    scene = depsgraph.scene
+    if scene.camera is None:
+        raise RenderRefused("the scene has no camera")
+    cam = scene.camera.evaluated_get(depsgraph)
+    if cam.type != 'CAMERA':
+        raise RenderRefused(f"the scene's camera '{cam.name}' is not a camera object")
+    if cam.data.type == 'PANO':
+        raise RenderRefused(f"camera '{cam.name}' is panoramic; EdgeLight renders perspective and "
+                            "orthographic cameras only")
+    r = scene.render
+    world = camera_world(cam)
+    proj = np.array(cam.calc_matrix_camera(depsgraph, x=full_w, y=full_h, scale_x=r.pixel_aspect_x,
+                                           scale_y=r.pixel_aspect_y), dtype=np.float64)
+    _, _, w, h = region
+    return frame.Camera(view=np.linalg.inv(world), projection=region_projection(proj, full_w, full_h, region),
+                        eye=tuple(world[:3, 3]), view_dir=tuple(-world[:3, 2]),
+                        orthographic=cam.data.type == 'ORTHO', width=w, height=h)
+
+
+def check_size(w, h):
+    """Refuses a frame larger than the GPU's textures (a clear message instead of a texture error)."""
+    limit = gpu.capabilities.max_texture_size_get()
+    if w > limit or h > limit:
+        raise RenderRefused(f"the frame is {w} x {h} pixels, and this GPU's textures go up to {limit} "
+                            f"x {limit}: lower the resolution, or render it in parts with Render Region")
 
 
 class EdgeLightRenderEngine(bpy.types.RenderEngine):
@@ -41,49 +105,88 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)  # 4.4+ passes arguments through
         self.viewport = None
+        self._viewport_errors = set()
 
+    # ---- viewport -------------------------------------------------------------------------
     def view_update(self, context, depsgraph):
-        lib, error = load_library()
-        if lib is None:
-            self.report({'ERROR'}, f"EdgeLight: native library unavailable: {error}")
-            return
-        if self.viewport is None:
-            self.viewport = viewport.ViewportState()
-            viewport.last_state = self.viewport
-        self.viewport.sync(depsgraph, lib)
+        try:
+            lib, error = load_library()
+            if lib is None:
+                self._viewport_error(f"native library unavailable: {error}")
+                return
+            if self.viewport is None:
+                self.viewport = viewport.ViewportState()
+                if capture:
+                    viewport.last_state = self.viewport
+            self.viewport.sync(depsgraph, lib)
+        except Exception as e:  # noqa: BLE001 - any failure must reach the artist
+            traceback.print_exc()
+            self._viewport_error(f"viewport update failed: {type(e).__name__}: {e}")
 
     def view_draw(self, context, depsgraph):
         if self.viewport is None:
             return  # nothing synced (library missing): Blender shows the cleared view
-        self.viewport.draw(self, context, depsgraph)
+        try:
+            self.viewport.draw(self, context, depsgraph)
+        except Exception as e:  # noqa: BLE001
+            traceback.print_exc()
+            self._viewport_error(f"viewport draw failed: {type(e).__name__}: {e}")
 
-    def _report(self, level, message):
-        last_render.setdefault("messages", []).append((level, message))
+    def _viewport_error(self, message):
+        """Once per distinct message: view_draw runs on every redraw."""
+        if message not in self._viewport_errors:
+            self._viewport_errors.add(message)
+            self.report({'ERROR'}, f"EdgeLight: {message}")
+        self.update_stats("EdgeLight", f"Error: {message}")
+
+    # ---- final render -----------------------------------------------------------------------
+    def _report(self, level, message, record):
+        record.setdefault("messages", []).append((level, message))
         self.report({level}, message)
 
     def render(self, depsgraph):
-        last_render.clear()
-        scene = depsgraph.scene
-        r = scene.render
-        scale = r.resolution_percentage / 100.0
-        width, height = max(1, int(r.resolution_x * scale)), max(1, int(r.resolution_y * scale))
-        result = self.begin_result(0, 0, width, height)
+        layer = depsgraph.view_layer.name
+        record = {"layer": layer}
+        if not capture:
+            last_render.clear()  # a render keeps nothing once it ends
         try:
-            pixels = self._render_pixels(depsgraph, width, height)
-            if pixels is not None:
-                compat.write_pass(result.layers[0].passes["Combined"], pixels.reshape(-1, 4))
+            self._render_layer(depsgraph, layer, record)
+        except RenderRefused as e:
+            self._report('ERROR', f"EdgeLight: {e}", record)
+        except Exception as e:  # noqa: BLE001 - a silently empty frame would be saved as if it had worked
+            traceback.print_exc()
+            self._report('ERROR', f"EdgeLight: rendering view layer '{layer}' failed: {type(e).__name__}: {e}", record)
+        finally:
+            if capture:  # the test clears last_render before a render; its layers accumulate
+                layers = last_render.get("layers", {})
+                layers[layer] = record
+                last_render.clear()
+                last_render.update(record, layers=layers)
+
+    def _render_layer(self, depsgraph, layer, record):
+        scene = depsgraph.scene
+        full_w, full_h = self.resolution_x, self.resolution_y  # the resolution percentage applied
+        region = render_region(scene.render, full_w, full_h)
+        if region[2] <= 0 or region[3] <= 0:
+            raise RenderRefused(f"the render region is empty ({region[2]} x {region[3]} pixels)")
+        check_size(region[2], region[3])
+        camera = camera_for_render(depsgraph, full_w, full_h, region)
+        lib, error = load_library()
+        if lib is None:
+            raise RenderRefused(f"native library unavailable: {error}")
+        result = self.begin_result(0, 0, region[2], region[3], layer=layer)
+        try:
+            size = (result.resolution_x, result.resolution_y)
+            if size != (region[2], region[3]):
+                raise RenderRefused(f"Blender asked for {size[0]} x {size[1]} pixels where EdgeLight "
+                                    f"computed a region of {region[2]} x {region[3]}")
+            record["result_layer"] = result.layers[0].name
+            pixels = self._render_pixels(depsgraph, camera, lib, record)
+            compat.write_pass(result.layers[0].passes["Combined"], pixels.reshape(-1, 4))
         finally:
             self.end_result(result)
 
-    def _render_pixels(self, depsgraph, width, height):
-        lib, error = load_library()
-        if lib is None:
-            self._report('ERROR', f"EdgeLight: native library unavailable: {error}")
-            return None
-        camera = camera_for_render(depsgraph, width, height)
-        if camera is None:
-            self._report('ERROR', "EdgeLight: the scene has no camera")
-            return None
+    def _render_pixels(self, depsgraph, camera, lib, record):
         self.update_stats("EdgeLight", "Gathering scene")
         toon.forget_images()  # an image may have been painted since the last render
         settings = depsgraph.scene.edgelight
@@ -92,15 +195,24 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         if len(data.lights) > frame.MAX_LIGHTS:
             data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
         for line in data.reports:
-            self._report('WARNING', f"EdgeLight: {line}")
+            self._report('WARNING', f"EdgeLight: {line}", record)
         s = frame.Settings(samples=settings.samples, highlights=settings.highlights,
                            transparent=depsgraph.scene.render.film_transparent, lines=line_settings)
-        keep = {}
+        keep = {} if capture else None
         reported = len(data.reports)
-        pixels, stats = frame.render(data, camera, s, progress=self.update_progress, cancelled=self.test_break, keep=keep)
+        total = max(1, int(settings.samples))
+
+        def progress(fraction):
+            self.update_progress(fraction)
+            self.update_stats("EdgeLight", f"Sample {round(fraction * total)}/{total}")
+
+        pixels, stats = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=keep)
         for line in data.reports[reported:]:  # what the passes skipped
-            self._report('WARNING', f"EdgeLight: {line}")
-        last_render.update(keep, pixels=pixels, stats=stats, reports=list(data.reports), camera=camera, scene=data)
+            self._report('WARNING', f"EdgeLight: {line}", record)
+        if stats.samples == 0 and not self.test_break():
+            raise RenderRefused("no sample was drawn")
+        if capture:
+            record.update(keep, pixels=pixels, stats=stats, reports=list(data.reports), camera=camera, scene=data)
         self.update_stats("EdgeLight", f"{stats.objects} objects, {stats.edges_drawn} edges, {stats.lines_drawn} line segments")
         return pixels
 

@@ -1,5 +1,5 @@
 """What the passes need to know about a material, read once per frame."""
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 import math
 
 from . import compat
@@ -36,6 +36,8 @@ class Shading:
     angle_deg: float
     # toon shading
     toon: Toon = PHONG
+    # A setting this material could not use, and what was used instead (a report line).
+    note: str = ""
 
 
 def default_ramp(base):
@@ -104,5 +106,20 @@ def shading_of(material):
     albedo = tuple(b * (1.0 - metallic) for b in base)
     s = material.edgelight
     n = s.shininess if s.use_custom_shininess else shininess_from_roughness(roughness)
+    toon, note = usable_toon(material.name, toon_of(s, base))
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), float(s.K), float(s.radius),
-                   tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon_of(s, base))
+                   tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note)
+
+
+def usable_toon(material_name, toon):
+    """The toon settings with anything unusable replaced by the default, and a note saying so:
+    a bad setting falls back for its own material only, never blanks the frame."""
+    image = toon.image
+    if toon.mode != 2 or image is None:
+        return toon, ""
+    w, h = image.size
+    if w >= 2 and h >= 2 and image.channels >= 1:
+        return toon, ""
+    return (replace(toon, image=None),
+            f"material '{material_name}': X-Toon image '{image.name}' is {w} x {h} (it needs at least "
+            f"2 x 2 pixels); the built-in map is used")

@@ -8,7 +8,9 @@ import os
 
 import numpy as np
 
-ABI_VERSION = 2
+from . import library_check
+
+ABI_VERSION = 3
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -74,7 +76,7 @@ class MeshInfo(ctypes.Structure):
     _fields_ = [(name, ctypes.c_uint32) for name in (
         "vertex_count", "triangle_count", "edge_count", "loose_edges", "border_edges",
         "manifold_edges", "non_manifold_edges", "crease_edges", "convex_edges", "concave_edges",
-        "marked_edges", "material_boundary_edges", "flipped_winding_edges",
+        "marked_edges", "material_boundary_edges", "flipped_winding_edges", "reoriented_triangles",
         "degenerate_triangles", "degenerate_edges", "host_edges")] + [("crease_angle_deg", ctypes.c_float)]
 
 
@@ -129,6 +131,7 @@ _SIGNATURES = {
     "el_mesh_get_edge_angles": [_P, _f32p, ctypes.c_uint32],
     "el_mesh_get_face_normals": [_P, _f32p, ctypes.c_uint32],
     "el_mesh_get_degenerate_triangles": [_P, _u8p, ctypes.c_uint32],
+    "el_mesh_get_triangle_flips": [_P, _u8p, ctypes.c_uint32],
     "el_mesh_select_edges": [_P, ctypes.c_uint32, ctypes.c_uint32, _u32p, ctypes.c_uint32, _u32p],
     "el_view_create": [_P, ctypes.POINTER(_P)],
     "el_view_update": [_P, ctypes.POINTER(Camera), ctypes.c_uint32, _u32p],
@@ -144,6 +147,14 @@ _SIGNATURES = {
     "el_highlight_reference": [ctypes.POINTER(HighlightInput), ctypes.POINTER(HighlightResult)],
 }
 _DESTROY = ("el_mesh_destroy", "el_view_destroy", "el_highlight_table_destroy")
+# Every function the binding calls besides el_abi_version: name -> (argtypes, restype). A library
+# lacking any is refused when loaded.
+_FUNCTIONS = {
+    "el_last_error": ([], ctypes.c_char_p),
+    "el_status_name": ([ctypes.c_int], ctypes.c_char_p),
+    **{name: (args, ctypes.c_int) for name, args in _SIGNATURES.items()},
+    **{name: ([_P], None) for name in _DESTROY},
+}
 
 
 def default_library_path():
@@ -152,10 +163,19 @@ def default_library_path():
 
 
 class Library:
-    """The loaded shared library with its C signatures declared; refuses another ABI version."""
+    """The loaded shared library with its C signatures declared; refuses a damaged file (before
+    mapping it: see library_check), another ABI version, and a library lacking a function."""
 
     def __init__(self, path=None):
         path = path or default_library_path()
+        if not os.path.isfile(path):
+            raise LibraryUnavailable("EL_LIBRARY_MISSING", f"cannot load {path}: no such file")
+        try:
+            library_check.check(path)
+        except library_check.Corrupt as e:
+            raise LibraryUnavailable("EL_LIBRARY_CORRUPT", str(e)) from None
+        except OSError as e:
+            raise LibraryUnavailable("EL_LIBRARY_MISSING", f"cannot load {path}: {e}") from None
         try:
             lib = ctypes.CDLL(path)
         except OSError as e:
@@ -167,16 +187,15 @@ class Library:
             raise LibraryUnavailable("EL_ABI_MISMATCH", f"{path} is not libedgelight (no el_abi_version)") from None
         if version != ABI_VERSION:
             raise LibraryUnavailable("EL_ABI_MISMATCH", f"{path} has ABI version {version}, this add-on needs {ABI_VERSION}")
-        lib.el_last_error.restype = ctypes.c_char_p
-        lib.el_status_name.restype = ctypes.c_char_p
-        lib.el_status_name.argtypes = [ctypes.c_int]
-        for name, args in _SIGNATURES.items():
+        missing = [name for name in _FUNCTIONS if not hasattr(lib, name)]
+        if missing:
+            shown = ", ".join(missing[:5]) + (f" and {len(missing) - 5} more" if len(missing) > 5 else "")
+            raise LibraryUnavailable("EL_ABI_MISMATCH", f"{path} has ABI version {version} but lacks "
+                                     f"functions this add-on calls: {shown}")
+        for name, (args, restype) in _FUNCTIONS.items():
             fn = getattr(lib, name)
             fn.argtypes = args
-            fn.restype = ctypes.c_int
-        for name in _DESTROY:
-            getattr(lib, name).argtypes = [_P]
-            getattr(lib, name).restype = None
+            fn.restype = restype
         self.lib = lib
         self.path = path
 
@@ -291,6 +310,13 @@ class Mesh(_Handle):
         n = self.info()["triangle_count"]
         out = np.empty((n, 3), dtype=np.float32)
         self._lib.call("el_mesh_get_face_normals", self._h, _ptr(out, ctypes.c_float), n)
+        return out
+
+    def triangle_flips(self):
+        """(T,) uint8: 1 where the library reversed the triangle's winding to orient its component."""
+        n = self.info()["triangle_count"]
+        out = np.empty(n, dtype=np.uint8)
+        self._lib.call("el_mesh_get_triangle_flips", self._h, _ptr(out, ctypes.c_uint8), n)
         return out
 
     def select_edges(self, all_of=0, any_of=0):

@@ -44,6 +44,12 @@ class MeshExtract:
     views: dict = field(default_factory=dict)   # instance index -> native.View
     _face_normals: object = None
 
+    def notes(self):
+        """Report lines about this geometry: what was drawn differently from the file and why."""
+        out = [self.info[k] for k in ("note", "winding") if self.info.get(k)]
+        out += [s.note for s in self.slot_shading if getattr(s, "note", "")]
+        return list(dict.fromkeys(out))
+
     def face_normals(self):
         if self._face_normals is None:
             self._face_normals = self.native.face_normals()
@@ -164,6 +170,10 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     out.edges = choose_edges(out.edge_data, shading)
     out.native = m
     out.update_lines(line_settings)
+    if info["flipped_winding_edges"]:
+        out.info["winding"] = (f"{name}: {info['flipped_winding_edges']} edges join faces wound against each other; "
+                               f"{info['reoriented_triangles']} faces were re-oriented (for highlights, creases "
+                               f"and silhouettes only, the mesh is unchanged)")
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
     return out
@@ -255,9 +265,54 @@ def world_ambient(scene):
     return tuple(float(v) for v in world.color)
 
 
-def collect(depsgraph, lib=None, line_settings=None):
-    """Everything visible in the evaluated scene. Objects that fail are reported and skipped."""
-    instances, lights, reports, extracted = [], [], [], {}
+# Types no engine draws as a surface: passed over without a word.
+_SILENT_TYPES = {'EMPTY', 'CAMERA', 'LIGHT_PROBE', 'LIGHTPROBE', 'SPEAKER', 'ARMATURE', 'LATTICE'}
+_TYPE_NAMES = {'VOLUME': "volume", 'POINTCLOUD': "point cloud", 'CURVES': "hair curves",
+               'GPENCIL': "grease pencil", 'GREASEPENCIL': "grease pencil"}
+
+
+def geometry_key(ob):
+    """What an instance draws: its evaluated geometry and its materials. Instances of one
+    geometry (Geometry Nodes, collection and particle instances, linked duplicates) share one
+    key, so one extraction and one native mesh serve all of them; instances carry their host's
+    name, so a name would not do."""
+    data = ob.data
+    materials = tuple(slot.material.name_full if slot.material else "" for slot in ob.material_slots)
+    if ob.type == 'MESH' and data is not None:
+        return ('MESH', data.as_pointer(), materials)
+    # Curves, text, surfaces and metaballs become meshes per object (to_mesh).
+    return (ob.type, ob.name_full, data.as_pointer() if data is not None else 0, materials)
+
+
+def instance_label(inst):
+    ob = inst.object
+    parent = inst.parent if inst.is_instance else None
+    return f"{ob.name} (instanced by {parent.name})" if parent is not None and parent.name != ob.name else ob.name
+
+
+def instance_owners(inst):
+    """Names whose geometry update makes this instance's extraction stale."""
+    parent = inst.parent if inst.is_instance else None
+    return (inst.object.name, parent.name) if parent is not None else (inst.object.name,)
+
+
+def not_drawn_note(not_drawn):
+    """One report line for the objects EdgeLight passes over, or None."""
+    if not not_drawn:
+        return None
+    items = sorted(not_drawn.items())
+    shown = ", ".join(f"'{name}' ({kind})" for name, kind in items[:6])
+    more = f" and {len(items) - 6} more" if len(items) > 6 else ""
+    return f"does not draw {len(items)} object{'s' if len(items) != 1 else ''}: {shown}{more}"
+
+
+def walk_instances(depsgraph, lookup):
+    """Every drawn instance of the evaluated scene, with the extraction `lookup` gives its
+    geometry. lookup(key, ob, label, owners) runs while the temporary instance object is valid
+    (only inside the depsgraph's iteration) and returns a MeshExtract or None.
+
+    Returns (instances, lights, not_drawn: {label: type name})."""
+    instances, lights, not_drawn = [], [], {}
     for inst in depsgraph.object_instances:
         ob = inst.object
         if ob.type == 'LIGHT':
@@ -266,25 +321,47 @@ def collect(depsgraph, lib=None, line_settings=None):
                 lights.append(light)
             continue
         if ob.type not in GEOMETRY_TYPES:
+            if ob.type not in _SILENT_TYPES:
+                not_drawn[instance_label(inst)] = _TYPE_NAMES.get(ob.type, ob.type.lower())
             continue
-        key = ob.name
+        extract = lookup(geometry_key(ob), ob, inst)
+        if extract is not None:
+            instances.append(Instance(extract, np.array(inst.matrix_world, dtype=np.float32)))
+    return instances, lights, not_drawn
+
+
+def read_object(ob, label, lib=None, line_settings=None):
+    """The extraction of one evaluated object (raises SkipObject), or None when it has no
+    geometry at all (a Geometry Nodes host whose output is only instances)."""
+    mesh = None
+    try:
+        mesh = ob.to_mesh()
+        if mesh is None or len(mesh.vertices) == 0:
+            return None
+        materials = [slot.material for slot in ob.material_slots]
+        return extract_mesh(label, mesh, materials, lib=lib, line_settings=line_settings)
+    finally:
+        if mesh is not None:
+            ob.to_mesh_clear()
+
+
+def collect(depsgraph, lib=None, line_settings=None):
+    """Everything visible in the evaluated scene. Objects that fail are reported and skipped."""
+    reports, extracted = [], {}
+
+    def lookup(key, ob, inst):
         if key not in extracted:
             extracted[key] = None
-            mesh = None
             try:
-                mesh = ob.to_mesh()
-                if mesh is None:
-                    raise SkipObject(f"{ob.name}: no geometry")
-                materials = [slot.material for slot in ob.material_slots]
-                extracted[key] = extract_mesh(ob.name, mesh, materials, lib=lib, line_settings=line_settings)
-                note = extracted[key].info.get("note")
-                if note:
-                    reports.append(note)
+                extracted[key] = read_object(ob, instance_label(inst), lib=lib, line_settings=line_settings)
             except SkipObject as e:
                 reports.append(str(e))
-            finally:
-                if mesh is not None:
-                    ob.to_mesh_clear()
-        if extracted[key] is not None:
-            instances.append(Instance(extracted[key], np.array(inst.matrix_world, dtype=np.float32)))
+            if extracted[key] is not None:
+                reports.extend(extracted[key].notes())
+        return extracted[key]
+
+    instances, lights, not_drawn = walk_instances(depsgraph, lookup)
+    note = not_drawn_note(not_drawn)
+    if note:
+        reports.append(note)
     return SceneData(instances, lights, world_ambient(depsgraph.scene), reports)

@@ -56,7 +56,8 @@ class ObjectCache:
 
 class ViewportState:
     def __init__(self):
-        self.objects = {}              # object name -> ObjectCache (None: skipped)
+        self.objects = {}              # scene_sync.geometry_key -> ObjectCache (None: skipped)
+        self.owners = {}               # the same keys -> names whose geometry update makes it stale
         self.instances = []
         self.lights = []
         self.ambient = (0.0, 0.0, 0.0)
@@ -86,34 +87,36 @@ class ViewportState:
                 toon.forget_images()  # an X-Toon image was edited
                 shading = True
         self.line_settings = lines.settings_of(depsgraph.scene.edgelight)
-        instances, lights, seen = [], [], set()
-        for inst in depsgraph.object_instances:
-            ob = inst.object
-            if ob.type == 'LIGHT':
-                light = scene_sync.light_of(ob, inst.matrix_world)
-                if light:
-                    lights.append(light)
-                continue
-            if ob.type not in scene_sync.GEOMETRY_TYPES:
-                continue
-            name = ob.name
-            if name not in seen:
-                seen.add(name)
-                if name not in self.objects or name in geometry:
-                    self.objects[name] = self._extract(ob, lib)
-                elif shading and self.objects[name] is not None:
-                    if len(ob.material_slots) != len(self.objects[name].materials):
-                        self.objects[name] = self._extract(ob, lib)  # the slot map changed
-                    else:
-                        self._reshade(ob, self.objects[name])
-            cache = self.objects.get(name)
-            if cache is not None and cache.extract.update_lines(self.line_settings):
+        # Geometry updates make stale every extraction an updated object owns (its own mesh, or
+        # the instances it makes): the keys are pointers, which a re-evaluation may reuse.
+        stale = {k for k, owners in self.owners.items() if geometry.intersection(owners)}
+        seen, reshaded = set(), set()
+
+        def lookup(cache_key, ob, inst):
+            if cache_key not in seen:
+                seen.add(cache_key)
+                cache = self.objects.get(cache_key, False)
+                if cache is False or cache_key in stale:
+                    self.objects[cache_key] = self._extract(ob, inst, lib)
+                    self.owners[cache_key] = scene_sync.instance_owners(inst)
+                elif shading and cache is not None and cache_key not in reshaded:
+                    reshaded.add(cache_key)
+                    self._reshade(ob, cache)
+            cache = self.objects[cache_key]
+            if cache is None:
+                return None
+            if cache.extract.update_lines(self.line_settings):
                 cache.lines_stale = True  # crease angle, marks or tapering changed
-            if cache is not None:
-                instances.append(scene_sync.Instance(cache.extract, np.array(inst.matrix_world, dtype=np.float32)))
-        removed = [n for n in self.objects if n not in seen]
-        for name in removed:
-            del self.objects[name]  # deleted objects: their batches go with them
+            return cache.extract
+
+        instances, lights, not_drawn = scene_sync.walk_instances(depsgraph, lookup)
+        removed = [k for k in self.objects if k not in seen]
+        for key in removed:
+            del self.objects[key]  # deleted objects and instances: their batches go with them
+            self.owners.pop(key, None)
+        note = scene_sync.not_drawn_note(not_drawn)
+        if note and note not in self.reports:
+            self.reports.append(note)
         if len(lights) > frame.MAX_LIGHTS:
             engine_note = f"{len(lights)} lights; the {frame.MAX_LIGHTS} first are used"
             if engine_note not in self.reports:
@@ -127,24 +130,21 @@ class ViewportState:
             self.image_valid = False
         self.signature = signature
 
-    def _extract(self, ob, lib):
+    def _extract(self, ob, inst, lib):
         self.counters.extracts += 1
-        mesh = None
         try:
-            mesh = ob.to_mesh()
-            if mesh is None:
-                return None
             materials = [slot.material for slot in ob.material_slots]
             self.counters.native_calls += 1
-            return ObjectCache(scene_sync.extract_mesh(ob.name, mesh, materials, lib=lib,
-                                                       line_settings=self.line_settings), materials)
+            extract = scene_sync.read_object(ob, scene_sync.instance_label(inst), lib=lib,
+                                             line_settings=self.line_settings)
         except scene_sync.SkipObject as e:
-            if str(e) not in self.reports:  # re-extracting a broken object must not grow the list
-                self.reports.append(str(e))
-            return None
-        finally:
-            if mesh is not None:
-                ob.to_mesh_clear()
+            extract, notes = None, [str(e)]
+        else:
+            notes = extract.notes() if extract is not None else []
+        for note in notes:
+            if note not in self.reports:  # re-extracting a broken object must not grow the list
+                self.reports.append(note)
+        return ObjectCache(extract, materials) if extract is not None else None
 
     def _reshade(self, ob, cache):
         """Material settings changed: new uniforms; new edge batches only where the chosen edges

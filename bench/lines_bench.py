@@ -174,6 +174,7 @@ def enable_edgelight():
         sys.exit("lines_bench: the EdgeLight add-on is not installed "
                  "(BLENDER_USER_SCRIPTS=$(scripts/install_addon.sh) blender -b ...)")
     import edgelight
+    edgelight.engine.capture = True  # error reports are read from the render's record
     return edgelight
 
 

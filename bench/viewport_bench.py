@@ -178,6 +178,8 @@ def steps():
 
 
 def main():
+    import edgelight
+    edgelight.engine.capture = True  # keep the viewport state and renders for the counts read here
     gen = steps()
 
     def tick():

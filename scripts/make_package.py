@@ -1,15 +1,21 @@
 #!/usr/bin/env python3
 """Assembles the add-on package an artist installs: one zip, edgelight/ inside, holding the
 Python package, blender_manifest.toml (Blender 4.2+ extension), bl_info (Blender 3.4 legacy
-add-on), the shaders and libedgelight.so. Called by the CMake target `package_addon`.
+add-on), the shaders, libedgelight.so and its record libedgelight.json (size and SHA-256, which
+the add-on checks before loading the library: addon/library_check.py). Called by the CMake target
+`package_addon`.
 
     make_package.py ROOT LIBRARY OUT_ZIP
 """
 import ast
+import json
 import os
 import re
 import sys
 import zipfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "addon"))
+import library_check  # noqa: E402  (plain Python: the add-on's check and this record share one format)
 
 
 def manifest_version(path):
@@ -52,6 +58,8 @@ def main(root, library, out):
         for path, arcname in files(root):
             z.write(path, arcname)
         z.write(library, "edgelight/libedgelight.so")
+        record = dict(library_check.make_record(library), file="libedgelight.so")
+        z.writestr("edgelight/libedgelight.json", json.dumps(record, indent=1) + "\n")
     os.replace(tmp, out)
     print(f"package: {out}")
 

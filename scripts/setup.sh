@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   libglm-dev libassimp-dev nlohmann-json3-dev
+  assimp-testmodels     # assimp's own valid and broken files: the tools must read or refuse each
   libosmesa6-dev libpng-dev  # edgelight-render: the add-on's shaders offscreen (llvmpipe), PNG out
   libgtest-dev libbenchmark-dev
   libcgal-demo          # classic meshes (cow, fandisk, bunny, armadillo) in data.tar.gz

@@ -1,5 +1,7 @@
 """Textures of toon shading: a material's shade ramp (256 x 1) and X-Toon map, built on demand
 and cached by their contents, so an unchanged material uploads nothing."""
+from dataclasses import replace
+
 import numpy as np
 
 from .. import compat
@@ -80,7 +82,11 @@ def map_texture(toon, base):
         make = lambda: image_texels(toon.image)  # noqa: E731
     tex = _maps.get(key)
     if tex is None:
-        tex = _maps[key] = _upload(make())
+        try:
+            texels = make()
+        except ValueError:  # the image changed since the material was read (and reported)
+            return map_texture(replace(toon, image=None), base)
+        tex = _maps[key] = _upload(texels)
     return tex
 
 

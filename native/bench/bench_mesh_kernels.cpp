@@ -6,6 +6,7 @@
 #include "classify.hpp"
 #include "contour.hpp"
 #include "mesh_build.hpp"
+#include "orient.hpp"
 #include "silhouette.hpp"
 #include "topology.hpp"
 #include "view_cache.hpp"
@@ -86,6 +87,16 @@ void BM_Classify(benchmark::State& state) {
     per_item(state, "ns_per_edge", data->edge_count());
 }
 
+void BM_Orient(benchmark::State& state) {  // the component walk of el_mesh_create
+    const auto& m = bench_mesh(int(state.range(0)));
+    auto data = el::build_mesh(desc_of(m));
+    for (auto _ : state) {
+        el::Orientation o = el::find_orientation(*data);
+        benchmark::DoNotOptimize(o.flips.data());
+    }
+    per_item(state, "ns_per_triangle", data->triangle_count());
+}
+
 void BM_CreaseThreshold(benchmark::State& state) {  // el_mesh_classify: a new threshold only
     const auto& m = bench_mesh(int(state.range(0)));
     auto data = el::build_mesh(desc_of(m));
@@ -160,6 +171,7 @@ void meshes(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_Topology)->Apply(meshes);
 BENCHMARK(BM_MeshCreate)->Apply(meshes);
 BENCHMARK(BM_Classify)->Apply(meshes);
+BENCHMARK(BM_Orient)->Apply(meshes);
 BENCHMARK(BM_CreaseThreshold)->Apply(meshes);
 BENCHMARK(BM_SilhouetteCold)->Apply(meshes);
 BENCHMARK(BM_SilhouetteOrbit)->Apply(meshes);

@@ -175,6 +175,7 @@ void fuzz_mesh(FuzzedDataProvider& p) {
     getter<float>(p, info.edge_count, 1, el_mesh_get_edge_angles, mesh);
     getter<float>(p, info.triangle_count, 3, el_mesh_get_face_normals, mesh);
     getter<uint8_t>(p, info.triangle_count, 1, el_mesh_get_degenerate_triangles, mesh);
+    getter<uint8_t>(p, info.triangle_count, 1, el_mesh_get_triangle_flips, mesh);
     uint32_t count = 0;
     const uint32_t fcap = p.ConsumeIntegralInRange<uint32_t>(0, 8);
     std::vector<uint32_t> faces(fcap + 1);

@@ -72,9 +72,10 @@ EL_API el_status el_mesh_get_info(const el_mesh* mesh, el_mesh_info* out) {
             info.concave_edges += (f & EL_EDGE_CONCAVE) != 0;
             info.marked_edges += (f & EL_MARK_ALL) != 0;
             info.material_boundary_edges += (f & EL_EDGE_MATERIAL_BOUNDARY) != 0;
-            info.flipped_winding_edges += (f & EL_EDGE_FLIPPED_WINDING) != 0;
             info.degenerate_edges += (f & EL_EDGE_DEGENERATE) != 0;
         }
+        info.flipped_winding_edges = m.orient.input_flipped_edges;
+        info.reoriented_triangles = m.orient.reoriented_triangles;
         for (uint8_t d : m.geom.face_degenerate) info.degenerate_triangles += d;
         info.host_edges = m.topo.host_edges ? 1u : 0u;
         info.crease_angle_deg = m.cls.crease_angle_deg;
@@ -128,6 +129,16 @@ EL_API el_status el_mesh_get_degenerate_triangles(const el_mesh* mesh, uint8_t* 
         const auto& d = mesh->data->geom.face_degenerate;
         require_capacity(capacity, d.size(), "capacity_triangles");
         std::copy(d.begin(), d.end(), out);
+    });
+}
+
+EL_API el_status el_mesh_get_triangle_flips(const el_mesh* mesh, uint8_t* out, uint32_t capacity) {
+    return guarded("el_mesh_get_triangle_flips", [&] {
+        require(mesh, "mesh");
+        require(out, "out");
+        const auto& f = mesh->data->orient.flips;
+        require_capacity(capacity, f.size(), "capacity_triangles");
+        std::copy(f.begin(), f.end(), out);
     });
 }
 

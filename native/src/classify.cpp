@@ -71,6 +71,8 @@ void analyze_edges(const MeshData& m, Classification& cls) {
             if (count == 2) {
                 cls.face1[e] = f1;
                 cls.face2[e] = f2;
+                // Triangles are oriented per component, so this is left only where the surface
+                // is non-orientable (or a repeated corner hides a face's direction).
                 const bool consistent = runs(m, f1, va, vb) && runs(m, f2, vb, va);
                 if (!consistent) flags |= EL_EDGE_FLIPPED_WINDING;
                 if (!any_degenerate) {
@@ -90,8 +92,9 @@ void analyze_edges(const MeshData& m, Classification& cls) {
     }
     cls.silhouette_candidates.clear();
     cls.candidate_faces.clear();
+    // Faces that disagree on a side have no front / back relation to compare.
     for (uint32_t e = 0; e < edge_count; ++e)
-        if (cls.face1[e] != EL_NO_EDGE && !(cls.edge_flags[e] & EL_EDGE_DEGENERATE)) {
+        if (cls.face1[e] != EL_NO_EDGE && !(cls.edge_flags[e] & (EL_EDGE_DEGENERATE | EL_EDGE_FLIPPED_WINDING))) {
             cls.silhouette_candidates.push_back(e);
             cls.candidate_faces.push_back(uint64_t(cls.face1[e]) | uint64_t(cls.face2[e]) << 32);
         }
@@ -102,7 +105,7 @@ void apply_crease_threshold(Classification& cls, float crease_angle_deg) {
     const size_t n = cls.edge_flags.size();
     for (size_t e = 0; e < n; ++e) {
         uint32_t f = cls.edge_flags[e] & ~EL_EDGE_CREASE;
-        const bool eligible = (f & EL_EDGE_MANIFOLD) && !(f & EL_EDGE_DEGENERATE);
+        const bool eligible = (f & EL_EDGE_MANIFOLD) && !(f & (EL_EDGE_DEGENERATE | EL_EDGE_FLIPPED_WINDING));
         if (eligible && cls.angle_deg[e] > crease_angle_deg) f |= EL_EDGE_CREASE;
         cls.edge_flags[e] = f;
     }

@@ -1,5 +1,6 @@
 // Static edge classification: face count type, the two face normals, the angle between them,
-// convex / concave, host marks, material boundaries, degeneracy; creases by threshold.
+// convex / concave, host marks, material boundaries, degeneracy; creases by threshold. Reads the
+// oriented triangles (orient.hpp).
 #pragma once
 
 #include "mesh_data.hpp"

@@ -3,6 +3,7 @@
 #include "classify.hpp"
 #include "face_normals.hpp"
 #include "mesh_validate.hpp"
+#include "orient.hpp"
 #include "topology.hpp"
 #include "vertex_normals.hpp"
 
@@ -24,6 +25,9 @@ std::shared_ptr<MeshData> build_mesh(const el_mesh_desc& d) {
     } else {
         m->topo = build_topology(d.triangles, d.triangle_count, d.vertex_count);
     }
+    // Everything below reads the oriented winding; the caller keeps drawing its own triangles.
+    m->orient = find_orientation(*m);
+    apply_orientation(*m, m->orient);
     if (d.triangle_materials)
         m->triangle_materials.assign(d.triangle_materials, d.triangle_materials + d.triangle_count);
 

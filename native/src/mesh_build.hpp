@@ -1,4 +1,5 @@
-// Builds a MeshData from a validated description: copy, topology, normals, classification.
+// Builds a MeshData from a validated description: copy, topology, orientation,
+// normals, classification.
 #pragma once
 
 #include "mesh_data.hpp"

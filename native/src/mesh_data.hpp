@@ -35,6 +35,13 @@ struct Geometry {
     std::vector<glm::vec3> vertex_normals;   // unit (host's or angle-weighted), zero if undefined
 };
 
+// The library's consistent winding per connected component (orient.hpp).
+struct Orientation {
+    std::vector<uint8_t> flips;              // per triangle: 1 where the input winding was reversed
+    uint32_t reoriented_triangles = 0;       // number of flips
+    uint32_t input_flipped_edges = 0;        // manifold edges both faces ran the same way as given
+};
+
 struct Classification {
     std::vector<uint32_t> edge_flags;        // EL_EDGE_* | EL_MARK_*, crease bit per threshold
     std::vector<glm::vec3> n1, n2;           // the two face normals the highlight pass needs
@@ -49,11 +56,12 @@ struct Classification {
 
 struct MeshData {
     std::vector<glm::vec3> positions;
-    std::vector<uint32_t> triangles;         // 3 per triangle
+    std::vector<uint32_t> triangles;         // 3 per triangle, in the oriented winding
     std::vector<uint32_t> edge_marks;        // host marks per edge (empty if none)
     std::vector<float> bevel_weights;        // per edge (empty if none)
     std::vector<uint32_t> triangle_materials;// per triangle (empty if none)
-    Topology topo;
+    Topology topo;                           // triangle_edges follow the oriented winding
+    Orientation orient;
     Geometry geom;
     Classification cls;
 

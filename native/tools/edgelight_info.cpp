@@ -2,6 +2,8 @@
 // Prints what the library sees in a mesh, as JSON: the quickest check of a model's edges.
 #include "cli_args.hpp"
 #include "mesh_io.hpp"
+#include "mesh_limits.hpp"
+#include "tool_failure.hpp"
 
 #include <edgelight/edgelight.h>
 
@@ -56,7 +58,8 @@ Args parse(int argc, char** argv) {
             for (int k = 0; k < 3; ++k) v[k] = number(argv[++i]);
             (arg == "--eye" ? a.has_eye : a.has_dir) = true;
         } else if (arg == "-h" || arg == "--help") {
-            std::cout << kUsage;
+            std::cout << kUsage << "  Refused (exit 1, one line on stderr): what assimp's validation rejects,\n"
+                      << "  and more than " << el_tools::kMeshLimitsText << ".\n";
             std::exit(0);
         } else {
             el_tools::cli_mesh_path(arg, a.mesh);
@@ -137,6 +140,7 @@ int main(int argc, char** argv) {
             {"manifold_edges", info.manifold_edges},
             {"non_manifold_edges", info.non_manifold_edges},
             {"flipped_winding_edges", info.flipped_winding_edges},
+            {"reoriented_triangles", info.reoriented_triangles},
             {"degenerate_faces", info.degenerate_triangles},
             {"crease_angle_deg", info.crease_angle_deg},
             {"crease_edges", info.crease_edges},
@@ -148,8 +152,7 @@ int main(int argc, char** argv) {
         };
         std::cout << out.dump(2) << "\n";
         return 0;
-    } catch (const std::exception& e) {
-        std::cerr << "edgelight-info: " << e.what() << "\n";
-        return 1;
+    } catch (...) {
+        return el_tools::report_failure("edgelight-info", args.mesh);
     }
 }

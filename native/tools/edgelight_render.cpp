@@ -4,6 +4,8 @@
 #include "mesh_batches.hpp"
 #include "cli_args.hpp"
 #include "mesh_io.hpp"
+#include "mesh_limits.hpp"
+#include "tool_failure.hpp"
 #include "osmesa_context.hpp"
 #include "png_write.hpp"
 #include "render_passes.hpp"
@@ -110,7 +112,8 @@ Args parse(int argc, char** argv) {
             scalar(s, 1.0, 256.0);
             a.samples = int(s);
         } else if (arg == "-h" || arg == "--help") {
-            std::cout << kUsage;
+            std::cout << kUsage << "  Refused (exit 1, one line on stderr): what assimp's validation rejects,\n"
+                      << "  and more than " << el_tools::kMeshLimitsText << ".\n";
             std::exit(0);
         } else {
             el_tools::cli_mesh_path(arg, a.mesh);
@@ -126,6 +129,9 @@ el_tools::Camera camera_for(const Args& a, const std::vector<float>& p) {
     const el_tools::Box box = el_tools::bounding_box(p);
     const glm::dvec3 centre = box.centre();
     const double diag = box.diagonal();
+    // Framing divides by the box's size: a mesh that is one point (or not finite) has none.
+    if (!a.has_eye && !(diag > 0.0 && std::isfinite(diag)))
+        throw std::invalid_argument("the mesh has no extent to frame (all vertices at one point); give --eye");
     el_tools::Camera c;
     c.width = a.width;
     c.height = a.height;
@@ -178,8 +184,7 @@ int main(int argc, char** argv) {
                   << mesh.triangles.size() / 3 << " triangles, " << scene.edges.size() << " rounded edges, "
                   << args.samples << " samples, " << long(ms) << " ms on " << context.description() << "\n";
         return 0;
-    } catch (const std::exception& e) {
-        std::cerr << "edgelight-render: " << e.what() << "\n";
-        return 1;
+    } catch (...) {
+        return el_tools::report_failure("edgelight-render", args.mesh);
     }
 }

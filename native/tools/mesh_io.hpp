@@ -1,4 +1,5 @@
-// Reads a mesh file (OFF, PLY, OBJ, STL, ... whatever assimp reads) into flat arrays.
+// Reads a mesh file (OFF, PLY, OBJ, STL, ... whatever assimp reads) into flat arrays, refusing
+// what assimp cannot validate or what exceeds MeshLimits (mesh_limits.hpp).
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,9 @@ struct LoadedMesh {
     std::vector<uint32_t> triangles; // 3 per triangle
 };
 
-// Throws std::runtime_error with assimp's message when the file cannot be read.
+// Throws std::runtime_error "cannot read 'PATH': REASON" (one line) when the file cannot be
+// read, fails assimp's validation, exceeds the limits, has an index out of range or a position
+// that is not finite.
 LoadedMesh load_mesh(const std::string& path);
 
 }  // namespace el_tools

@@ -73,6 +73,9 @@ def render(resolution=None, expect_error=False):
     if resolution:
         scene.render.resolution_x, scene.render.resolution_y = resolution
         scene.render.resolution_percentage = 100
+    engine = addon().engine
+    engine.capture = True
+    engine.last_render.clear()
     try:
         bpy.ops.render.render()
     except RuntimeError as e:

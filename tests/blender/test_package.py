@@ -1,5 +1,7 @@
 """The package zip: what is inside, that Blender validates it, and that it installs and renders."""
 import ast
+import hashlib
+import json
 import os
 import re
 import subprocess
@@ -42,6 +44,13 @@ class Contents(unittest.TestCase):
         info_version = ".".join(map(str, bl_info["version"]))
         self.assertEqual(manifest_version(manifest), info_version)
 
+    def test_library_record_matches_the_library(self):
+        with zipfile.ZipFile(PACKAGE) as z:
+            library = z.read("edgelight/libedgelight.so")
+            record = json.loads(z.read("edgelight/libedgelight.json"))
+        self.assertEqual(record, {"file": "libedgelight.so", "size": len(library),
+                                  "sha256": hashlib.sha256(library).hexdigest()})
+
     def test_running_add_on_is_the_installed_package(self):
         mod = helpers.addon()
         here = os.path.dirname(mod.__file__)
@@ -50,6 +59,8 @@ class Contents(unittest.TestCase):
         # The library is found beside the add-on (EDGELIGHT_LIBRARY overrides only in tests).
         self.assertEqual(mod.native.default_library_path(), os.path.join(here, "libedgelight.so"))
         self.assertEqual(mod.native.load().path, os.path.join(here, "libedgelight.so"))
+        # Installed with its record, so the full check (size and SHA-256) applies.
+        self.assertEqual(mod.library_check.check(os.path.join(here, "libedgelight.so")), "record")
 
 
 class Validates(unittest.TestCase):

@@ -1,6 +1,10 @@
 """Bad input gets a report and the render goes on; the user's data is never changed."""
 import hashlib
 import os
+import re
+import shutil
+import subprocess
+import tempfile
 import unittest
 
 import bpy
@@ -91,6 +95,55 @@ class NativeLibraryProblems(unittest.TestCase):
         self.assertTrue(fake and os.path.exists(fake), "the test build provides a mismatched library")
         rec = self.render_with_library(fake)
         self.assertIn("has ABI version 999, this add-on needs", messages(rec))
+
+    def test_library_lacking_functions(self):
+        fake = os.environ.get("EDGELIGHT_FAKE_SYMBOLS_LIBRARY")
+        self.assertTrue(fake and os.path.exists(fake), "the test build provides a library lacking functions")
+        rec = self.render_with_library(fake)
+        self.assertIn("native library unavailable: EL_ABI_MISMATCH: " + fake, messages(rec))
+        # The fake exports el_abi_version and el_last_error only.
+        self.assertRegex(messages(rec), r"lacks functions this add-on calls: el_status_name, el_\w+, .* and \d+ more")
+        self.assertNotIn("el_last_error", messages(rec))
+        self.assertNotIn("pixels", rec)
+
+
+class DamagedLibraryFiles(unittest.TestCase):
+    """Damaged copies of the installed library are refused before ctypes maps them."""
+
+    def load_elsewhere(self, paths):
+        """native.load of each path in another Blender: a copy mapped by mistake may kill it."""
+        cmd = helpers.blender_command(os.path.join(helpers.HERE, "load_library.py"), *paths)
+        run = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+        results = dict(re.findall(r"^EDGELIGHT_LOAD (\d+) (.*)$", run.stdout, re.M))
+        self.assertEqual(len(results), len(paths), f"exit code {run.returncode}: {(run.stdout + run.stderr)[-3000:]}")
+        return [results[str(i)] for i in range(len(paths))]
+
+    def test_truncated_and_flipped_copies(self):
+        here = os.path.dirname(helpers.addon().__file__)
+        with open(os.path.join(here, "libedgelight.so"), "rb") as f:
+            data = f.read()
+        flipped = bytearray(data)
+        flipped[len(data) // 2] ^= 0x10
+        tmp = tempfile.mkdtemp(prefix="edgelight_damaged_")
+        self.addCleanup(shutil.rmtree, tmp)
+        cases = {}  # name: path of a copy, beside the package's record unless *_bare
+        for name, content, record in (("intact", data, True), ("half", data[:len(data) // 2], True),
+                                      ("hundred", data[:100], True), ("flipped", bytes(flipped), True),
+                                      ("half_bare", data[:len(data) // 2], False), ("hundred_bare", data[:100], False)):
+            os.mkdir(os.path.join(tmp, name))
+            path = os.path.join(tmp, name, "libedgelight.so")
+            with open(path, "wb") as f:
+                f.write(content)
+            if record:
+                shutil.copy(os.path.join(here, "libedgelight.json"), os.path.join(tmp, name))
+            cases[name] = path
+        results = dict(zip(cases, self.load_elsewhere(list(cases.values()))))
+        self.assertEqual(results["intact"], "ok")
+        for name in ("half", "hundred", "half_bare", "hundred_bare"):
+            self.assertRegex(results[name],
+                             rf"^refused EL_LIBRARY_CORRUPT: {re.escape(cases[name])} is \d+ bytes but .*truncated")
+        self.assertIn(f"refused EL_LIBRARY_CORRUPT: {cases['flipped']} does not match the SHA-256 checksum",
+                      results["flipped"])
 
 
 def fingerprint():

@@ -193,6 +193,7 @@ def steps():
     # 7. A final render started from the UI as an artist would (a render job with its own GPU
     # context, not -b).
     import edgelight
+    edgelight.engine.capture = True
     edgelight.engine.last_render.clear()
     bpy.context.scene.edgelight.samples = 2
     with bpy.context.temp_override(window=window, area=area, region=region):
@@ -208,6 +209,8 @@ def steps():
 
 
 def run():
+    import edgelight
+    edgelight.engine.capture = True  # keep the viewport state and renders for the counts read here
     gen = steps()
 
     def tick():

@@ -169,6 +169,12 @@ TEST(CapiErrors, Getters) {
     EXPECT_EQ(el_mesh_get_edge_angles(nullptr, f.data(), n), EL_ERR_NULL_POINTER);
     EXPECT_EQ(el_mesh_get_face_normals(mesh.get(), f.data(), 11), EL_ERR_BUFFER_TOO_SMALL);
     EXPECT_EQ(el_mesh_get_degenerate_triangles(mesh.get(), b.data(), 2), EL_ERR_BUFFER_TOO_SMALL);
+    EXPECT_EQ(el_mesh_get_triangle_flips(nullptr, b.data(), 12), EL_ERR_NULL_POINTER);
+    EXPECT_EQ(el_mesh_get_triangle_flips(mesh.get(), nullptr, 12), EL_ERR_NULL_POINTER);
+    EXPECT_EQ(el_mesh_get_triangle_flips(mesh.get(), b.data(), 11), EL_ERR_BUFFER_TOO_SMALL);
+    EXPECT_NE(std::string(el_last_error()).find("el_mesh_get_triangle_flips: capacity_triangles"), std::string::npos)
+        << el_last_error();
+    EXPECT_EQ(el_mesh_get_triangle_flips(mesh.get(), b.data(), 12), EL_OK);
     uint32_t count = 0;
     EXPECT_EQ(el_mesh_get_edge_faces(mesh.get(), n, u.data(), 4, &count), EL_ERR_INDEX_OUT_OF_RANGE);
     EXPECT_EQ(el_mesh_get_edge_faces(mesh.get(), 0, u.data(), 4, nullptr), EL_ERR_NULL_POINTER);

@@ -90,12 +90,15 @@ TEST(Topology, NonManifoldFin) {
         }
 }
 
-TEST(Topology, FlippedWindingIsFlagged) {
+TEST(Topology, FlippedWindingIsCountedAndOriented) {
     TestMesh m = hinge(90.0f);
     std::swap(m.triangles[4], m.triangles[5]);  // second face now runs the shared edge like the first
     auto mesh = create(m.desc());
-    EXPECT_EQ(info(mesh.get()).flipped_winding_edges, 1u);
-    EXPECT_EQ(info(mesh.get()).convex_edges + info(mesh.get()).concave_edges, 0u);
+    const el_mesh_info i = info(mesh.get());
+    EXPECT_EQ(i.flipped_winding_edges, 1u) << "counted as given";
+    EXPECT_EQ(i.reoriented_triangles, 1u) << "equal areas: the first triangle keeps its winding";
+    EXPECT_EQ(i.convex_edges + i.concave_edges, 1u) << "classified in the oriented winding";
+    for (uint32_t f : edge_flags(mesh.get())) EXPECT_FALSE(f & EL_EDGE_FLIPPED_WINDING);
 }
 
 TEST(Topology, DegenerateTrianglesAreFlaggedWithoutNaN) {

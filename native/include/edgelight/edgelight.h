@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 2u
+#define EL_ABI_VERSION 3u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -75,7 +75,9 @@ typedef struct el_mesh el_mesh;
 #define EL_EDGE_CONCAVE            (1u << 6)  /* manifold, bends towards the outside */
 #define EL_EDGE_DEGENERATE         (1u << 7)  /* zero length, or next to a zero-area face */
 #define EL_EDGE_MATERIAL_BOUNDARY  (1u << 8)  /* faces with different triangle_materials */
-#define EL_EDGE_FLIPPED_WINDING    (1u << 9)  /* manifold, both faces run the edge the same way */
+#define EL_EDGE_FLIPPED_WINDING    (1u << 9)  /* manifold, both faces run the edge the same way
+                                                 even after orientation (non-orientable surface):
+                                                 never convex, concave, crease or silhouette */
 
 /* Everything the library needs to know about one mesh. Optional arrays may be NULL. */
 typedef struct el_mesh_desc {
@@ -101,7 +103,16 @@ typedef struct el_mesh_desc {
 
 /* Validates every input, builds edges and edge->face adjacency (or takes the host's), face
  * normals, dihedral angles and convexity. Classifies creases at 30 degrees until
- * el_mesh_classify is called. */
+ * el_mesh_classify is called.
+ *
+ * Orientation: the input winding of each triangle does not matter. Each connected component
+ * (faces joined through manifold edges) gets one consistent winding: a closed component (every
+ * triangle side on a manifold edge) the one with outward normals (positive signed volume), an
+ * open one the winding of the larger part of its input area (a tie keeps its lowest-indexed
+ * triangle as given). Face normals, edge normals N1/N2, angles, convexity, creases, facing,
+ * silhouettes and computed vertex normals all follow that winding;
+ * el_mesh_get_triangle_flips says which triangles it reverses. The caller's triangles are not
+ * changed. */
 EL_API el_status el_mesh_create(const el_mesh_desc* desc, el_mesh** out_mesh);
 EL_API void el_mesh_destroy(el_mesh* mesh);
 
@@ -123,7 +134,10 @@ typedef struct el_mesh_info {
     uint32_t concave_edges;
     uint32_t marked_edges;            /* any EL_MARK_* bit */
     uint32_t material_boundary_edges;
-    uint32_t flipped_winding_edges;
+    uint32_t flipped_winding_edges;   /* manifold edges whose two faces ran them the same way in
+                                         the input (before orientation); the edges still flagged
+                                         EL_EDGE_FLIPPED_WINDING are a subset (non-orientable) */
+    uint32_t reoriented_triangles;    /* triangles whose winding the library reversed */
     uint32_t degenerate_triangles;
     uint32_t degenerate_edges;
     uint32_t host_edges;              /* 1 if the host supplied edges */
@@ -138,15 +152,19 @@ EL_API el_status el_mesh_get_edge_flags(const el_mesh* mesh, uint32_t* out, uint
 /* Number of faces per edge. */
 EL_API el_status el_mesh_get_edge_face_counts(const el_mesh* mesh, uint32_t* out, uint32_t capacity_edges);
 /* 6 floats per edge: N1 xyz, N2 xyz (object space, unit). N1 is the normal of the face that runs
- * the edge from its first to its second vertex (if any). Border edges: N2 = N1. Loose edges and
+ * the edge from its first to its second vertex in the oriented winding (if any). Border edges: N2 = N1. Loose edges and
  * edges whose faces are all degenerate: zero vectors. */
 EL_API el_status el_mesh_get_edge_normals(const el_mesh* mesh, float* out, uint32_t capacity_edges);
 /* Angle between the two face normals in degrees (0 flat, 90 cube edge); 0 for non-manifold. */
 EL_API el_status el_mesh_get_edge_angles(const el_mesh* mesh, float* out, uint32_t capacity_edges);
-/* 3 floats per triangle, unit, or zero for a degenerate triangle. */
+/* 3 floats per triangle, unit, or zero for a degenerate triangle; in the oriented winding, so
+ * the negation of the input winding's normal for the triangles el_mesh_get_triangle_flips marks. */
 EL_API el_status el_mesh_get_face_normals(const el_mesh* mesh, float* out, uint32_t capacity_triangles);
 /* 1 per degenerate triangle, else 0. */
 EL_API el_status el_mesh_get_degenerate_triangles(const el_mesh* mesh, uint8_t* out, uint32_t capacity_triangles);
+/* 1 per triangle whose winding the library reversed to orient its component (see el_mesh_create),
+ * else 0. */
+EL_API el_status el_mesh_get_triangle_flips(const el_mesh* mesh, uint8_t* out, uint32_t capacity_triangles);
 /* Faces of one edge: writes up to capacity triangle indices and the total count. */
 EL_API el_status el_mesh_get_edge_faces(const el_mesh* mesh, uint32_t edge, uint32_t* out,
                                         uint32_t capacity, uint32_t* out_count);
@@ -228,7 +246,7 @@ EL_API el_status el_view_update(el_view* view, const el_camera* camera, uint32_t
 /* Manifold edges whose two faces face differently (front/back); ascending edge indices. */
 EL_API el_status el_view_get_silhouettes(const el_view* view, uint32_t* out, uint32_t capacity,
                                          uint32_t* out_count);
-/* Per-face facing bit for the current camera (1 = front-facing). */
+/* Per-face facing bit for the current camera (1 = front-facing), in the oriented winding. */
 EL_API el_status el_view_get_facing(const el_view* view, uint8_t* out, uint32_t capacity_triangles);
 /* Smooth contour segments (zero set of n.v, Hertzmann & Zorin): 6 floats per segment, two
  * object-space endpoints; out_triangles (optional) gets the triangle of each segment. */

@@ -1,0 +1,71 @@
+"""Scenes built the way artists build them, by script (never a saved binary), for the
+production-scene tests: Geometry Nodes instances, collection and particle instances, linked
+duplicates, view layers, objects EdgeLight does not draw. Works on Blender 3.4 through 5.x."""
+import bpy
+import numpy as np
+
+import helpers
+
+
+def _group_sockets(group, with_input):
+    """Geometry in (optional) and out sockets on any version (4.0 moved them to `interface`)."""
+    if hasattr(group, "interface"):
+        if with_input:
+            group.interface.new_socket("Geometry", in_out='INPUT', socket_type='NodeSocketGeometry')
+        group.interface.new_socket("Geometry", in_out='OUTPUT', socket_type='NodeSocketGeometry')
+    else:
+        if with_input:
+            group.inputs.new('NodeSocketGeometry', "Geometry")
+        group.outputs.new('NodeSocketGeometry', "Geometry")
+
+
+def geometry_nodes(ob, build, with_input=False):
+    """Adds a Geometry Nodes modifier whose tree `build(nodes, links, group_in)` returns the
+    socket that becomes the object's geometry."""
+    group = bpy.data.node_groups.new(ob.name + "Nodes", 'GeometryNodeTree')
+    _group_sockets(group, with_input)
+    nodes, links = group.nodes, group.links
+    group_in = nodes.new('NodeGroupInput')
+    group_out = nodes.new('NodeGroupOutput')
+    links.new(build(nodes, links, group_in), group_out.inputs[0])
+    mod = ob.modifiers.new("Nodes", 'NODES')
+    mod.node_group = group
+    return group
+
+
+def mesh_object(name, verts, faces, location=(0.0, 0.0, 0.0), collection=None):
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(verts, [], faces)
+    mesh.update()
+    ob = bpy.data.objects.new(name, mesh)
+    ob.location = location
+    (collection or bpy.context.scene.collection).objects.link(ob)
+    return ob
+
+
+def box(name, size=1.0, location=(0.0, 0.0, 0.0), collection=None):
+    s = size / 2.0
+    verts = [(x, y, z) for x in (-s, s) for y in (-s, s) for z in (-s, s)]
+    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    return mesh_object(name, verts, faces, location, collection)
+
+
+def material(name, rgb):
+    mat = bpy.data.materials.new(name)
+    mat.diffuse_color = (*rgb, 1.0)
+    return mat
+
+
+def top_camera(half_width, height=20.0):
+    """An orthographic camera looking straight down at the origin, seeing +-half_width."""
+    cam = helpers.add_camera((0.0, 0.0, height), (0.0, 0.0, 0.0))
+    cam.rotation_euler = (0.0, 0.0, 0.0)
+    cam.data.type = 'ORTHO'
+    cam.data.ortho_scale = 2.0 * half_width
+    cam.data.clip_end = 2.0 * height
+    return cam
+
+
+def coverage(rec):
+    """Surface coverage (h, w) of a render record."""
+    return np.asarray(rec["surface"])[..., 3]
