@@ -134,9 +134,9 @@ class ViewportState:
         self.counters.extracts += 1
         try:
             materials = [slot.material for slot in ob.material_slots]
-            self.counters.native_calls += 1
             extract = scene_sync.read_object(ob, scene_sync.instance_label(inst), lib=lib,
                                              line_settings=self.line_settings)
+            self.counters.native_calls += extract is not None  # an empty host builds nothing
         except scene_sync.SkipObject as e:
             extract, notes = None, [str(e)]
         else:

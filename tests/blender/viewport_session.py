@@ -190,7 +190,62 @@ def steps():
     check("lines: crease angle change re-chooses static lines without a mesh build",
           c10["native_calls"] == c9["native_calls"] and c10["uploads"] > c9["uploads"], f"uploads {c9['uploads']} -> {c10['uploads']}")
 
-    # 7. A final render started from the UI as an artist would (a render job with its own GPU
+    # 7. Geometry Nodes instances: 100 studs from one cone, one native mesh for all of them;
+    # moving their host re-extracts nothing.
+
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import scene_zoo as zoo
+    import edgelight
+    state = edgelight.viewport.last_state
+    before_instances = len(state.instances)
+
+    def studs(nodes, links, group_in):
+        grid = nodes.new('GeometryNodeMeshGrid')
+        grid.inputs["Vertices X"].default_value = grid.inputs["Vertices Y"].default_value = 10
+        cone = nodes.new('GeometryNodeMeshCone')
+        cone.inputs["Radius Bottom"].default_value = 0.05
+        cone.inputs["Depth"].default_value = 0.2
+        inst = nodes.new('GeometryNodeInstanceOnPoints')
+        links.new(grid.outputs["Mesh"], inst.inputs["Points"])
+        links.new(cone.outputs["Mesh"], inst.inputs["Instance"])
+        return inst.outputs["Instances"]
+
+    host = zoo.box("Studs", 0.1, (0.0, 0.0, 1.2))
+    zoo.geometry_nodes(host, studs)
+    yield 0.5
+    redraw()
+    yield 0.5
+    c11 = counters()
+    check("instances: 100 Geometry Nodes instances drawn from one native mesh",
+          len(state.instances) == before_instances + 100 and c11["native_calls"] == c10["native_calls"] + 1,
+          f"instances {before_instances} -> {len(state.instances)}, native calls {c10['native_calls']} -> {c11['native_calls']}")
+    host.location.x += 0.2
+    yield 0.5
+    redraw()
+    yield 0.5
+    c12 = counters()
+    check("instances: moving their host re-extracts nothing",
+          c12["native_calls"] == c11["native_calls"] and c12["extracts"] == c11["extracts"] and c12["passes"] > c11["passes"],
+          f"extracts {c11['extracts']} -> {c12['extracts']}")
+    # A material's bad X-Toon image (1 x 1) falls back for that material with a report; the
+    # view keeps drawing.
+    tiny = bpy.data.images.new("Tiny", 1, 1)
+    mat = zoo.material("Studs", (0.2, 0.4, 0.8))
+    mat.edgelight.shading = 'XTOON'
+    mat.edgelight.xtoon_image = tiny
+    tile = zoo.box("Tile", 0.3, (0.0, 0.0, 1.5))
+    tile.data.materials.append(mat)
+    yield 0.5
+    redraw()
+    yield 0.5
+    c13 = counters()
+    note = [r for r in state.reports if "X-Toon image 'Tiny'" in r]
+    check("X-Toon: a 1 x 1 image falls back for its material, the view keeps drawing",
+          len(note) == 1 and c13["passes"] > c12["passes"], f"reports {state.reports[-2:]}")
+    bpy.data.objects.remove(host)
+    bpy.data.objects.remove(tile)
+
+    # 8. A final render started from the UI as an artist would (a render job with its own GPU
     # context, not -b).
     import edgelight
     edgelight.engine.capture = True
