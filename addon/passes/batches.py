@@ -65,16 +65,17 @@ def edge_batches(extract):
 class GpuMesh:
     """Everything the passes draw for one extracted mesh, built in the GPU context."""
 
-    def __init__(self, extract):
+    def __init__(self, extract, line_chunk=None):
         self.extract = extract
+        self.line_chunk = line_chunk  # segments per line batch (line_pass.line_batches)
         self.surface = surface_batches(extract)
         self.rebuild_edges()
         self.rebuild_lines()
 
     def rebuild_lines(self):
-        """The static line types (view-independent), type -> (batch, count)."""
+        """The static line types (view-independent), type -> ([batch, ...], count)."""
         from .line_pass import line_batches
-        self.lines = line_batches(self.extract.lines)
+        self.lines = line_batches(self.extract.lines, self.line_chunk)
 
     def rebuild_edges(self):
         self.edges = edge_batches(self.extract)

@@ -12,10 +12,11 @@ _TRIS = np.array([0, 1, 3, 0, 3, 2], dtype=np.int64)
 REL_BIAS = 1e-4
 
 
-def line_batch(seg):
-    """GPUBatch of one LineSegments, or None when it is empty."""
-    n = len(seg)
-    if n == 0:
+def line_batch(seg, start=0, stop=None):
+    """GPUBatch of segments [start, stop) of one LineSegments, or None when that is empty."""
+    stop = len(seg) if stop is None else min(stop, len(seg))
+    n = stop - start
+    if n <= 0:
         return None
     fmt = gpu.types.GPUVertFormat()
     attrs = {"p0": seg.p0, "p1": seg.p1, "n1": seg.n1, "n2": seg.n2, "taper": seg.taper}
@@ -24,19 +25,22 @@ def line_batch(seg):
     fmt.attr_add(id="corner", comp_type='F32', len=2, fetch_mode='FLOAT')
     vbo = gpu.types.GPUVertBuf(fmt, 4 * n)
     for name, a in attrs.items():
-        vbo.attr_fill(name, np.repeat(np.ascontiguousarray(a, np.float32), 4, axis=0))
+        vbo.attr_fill(name, np.repeat(np.ascontiguousarray(a[start:stop], np.float32), 4, axis=0))
     vbo.attr_fill("corner", np.tile(_CORNERS, (n, 1)))
     idx = (np.repeat(np.arange(n) * 4, 6) + np.tile(_TRIS, n)).astype(np.int32).reshape(-1, 3)
     return gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
 
 
-def line_batches(segments):
-    """type -> (GPUBatch, count) for the non-empty sets of `segments` (type -> LineSegments)."""
+def line_batches(segments, chunk=None):
+    """type -> ([GPUBatch, ...], count) for the non-empty sets of `segments` (type ->
+    LineSegments). With `chunk`, each batch holds at most that many segments, so a final render
+    can check for a cancel between them; the viewport draws each set as one batch."""
     out = {}
     for kind, seg in segments.items():
-        batch = line_batch(seg)
-        if batch is not None:
-            out[kind] = (batch, len(seg))
+        step = chunk or max(len(seg), 1)
+        parts = [b for b in (line_batch(seg, i, i + step) for i in range(0, len(seg), step)) if b is not None]
+        if parts:
+            out[kind] = (parts, len(seg))
     return out
 
 
@@ -44,16 +48,18 @@ def _mat(m):
     return np.asarray(m, dtype=np.float32).T.reshape(-1)
 
 
-def draw_lines(targets, instances, settings, ubo, stats):
-    """instances: [(model matrix, {type: (batch, count)})]; types drawn in settings' order."""
+def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None):
+    """instances: [(model matrix, {type: ([batch, ...], count)})]; types drawn in settings'
+    order. checkpoint(), when given, runs after each batch; True stops the pass (a cancel):
+    returns whether it stopped."""
     if settings is None and targets.lines_empty:
-        return  # still clear from the last frame: no full-screen clear per frame without lines
+        return False  # still clear from the last frame: no full-screen clear per frame without lines
     shader = shader_lib.get("line")
     with targets.line_fb.bind():
         targets.line_fb.clear(color=(0.0, 0.0, 0.0, 0.0), depth=1.0)
         targets.lines_empty = settings is None
         if settings is None:
-            return
+            return False
         gpu.state.depth_test_set('LESS')
         gpu.state.depth_mask_set(True)
         gpu.state.blend_set('NONE')
@@ -70,7 +76,13 @@ def draw_lines(targets, instances, settings, ubo, stats):
                 if entry is None:
                     continue
                 shader.uniform_float("model", _mat(matrix))
-                entry[0].draw(shader)
                 stats.lines_drawn += entry[1]
+                for batch in entry[0]:
+                    batch.draw(shader)
+                    if checkpoint is not None and checkpoint():
+                        gpu.state.depth_test_set('NONE')
+                        gpu.state.depth_mask_set(False)
+                        return True
         gpu.state.depth_test_set('NONE')
         gpu.state.depth_mask_set(False)
+    return False

@@ -209,6 +209,45 @@ class LoudFailures(unittest.TestCase):
             self.assertFalse([f for f in os.listdir(tmp) if f.startswith("out_")])
 
 
+class Cancel(unittest.TestCase):
+    def test_ctrl_c_lands_within_a_sample(self):
+        """1000-pixel strokes at 960 x 540 keep llvmpipe busy for many seconds in the first
+        sample's line pass: Ctrl-C (Blender's break) must stop it within a couple of seconds."""
+        helpers.needs_gpu()
+        if helpers.is_module_build():
+            self.skipTest("PyPI's bpy installs no Ctrl-C handler of Blender's")
+        import signal
+        import subprocess
+        import time
+        scene = helpers.open_sample("toon", samples=16)
+        scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = 960, 540, 100
+        for name in ("silhouette", "crease", "border", "contour"):
+            style = getattr(scene.edgelight, "line_" + name)
+            style.enabled, style.width = True, 1000.0
+        started = "import bpy; bpy.app.handlers.render_init.append(lambda *a: print('EDGELIGHT_RENDER_STARTED', flush=True))"
+        with tempfile.TemporaryDirectory() as tmp:
+            blend = os.path.join(tmp, "wide.blend")
+            scene.render.filepath = os.path.join(tmp, "out_")
+            bpy.ops.wm.save_as_mainfile(filepath=blend, copy=True)
+            proc = subprocess.Popen([bpy.app.binary_path, "-b", "--factory-startup", "--addons", helpers.MODULE, blend,
+                                     "--python-expr", started, "-f", "1"],
+                                    stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+            try:
+                for line in proc.stdout:
+                    if "EDGELIGHT_RENDER_STARTED" in line:
+                        break
+                time.sleep(2.0)  # well inside the first sample's line pass
+                self.assertIsNone(proc.poll(), "the render ended before the cancel")
+                sent = time.monotonic()
+                proc.send_signal(signal.SIGINT)
+                out = proc.communicate(timeout=60)[0]
+                waited = time.monotonic() - sent
+            finally:
+                proc.kill()
+            self.assertLess(waited, 4.0, out[-1500:])
+            self.assertFalse([f for f in os.listdir(tmp) if f.startswith("out_")], "a cancelled frame is not saved")
+
+
 class Memory(unittest.TestCase):
     def test_nothing_is_kept_after_a_4k_render(self):
         """No record, and no growth from one 4K render to the next. (The GPU driver holds a
