@@ -62,6 +62,11 @@ def main():
     passed = result.testsRun - failed - len(result.skipped)
     if helpers.GPU_UNAVAILABLE:
         print(f"blender {bpy.app.version_string}: GPU tests skipped: {helpers.GPU_UNAVAILABLE}")
+        # The version matrix promises rendering tests: skipping them all is a failure there (only
+        # the entry that removes the GPU on purpose expects the skips).
+        if os.environ.get("EDGELIGHT_REQUIRE_GPU") == "1":
+            failed += 1
+            print(f"blender {bpy.app.version_string}: this entry requires the GPU, and the probe failed")
     print(f"blender {bpy.app.version_string}: {passed} passed, {failed} failed, {len(result.skipped)} skipped")
     sys.stdout.flush()
     os._exit(0 if failed == 0 and result.testsRun > 0 else 1)
