@@ -103,29 +103,45 @@ def eevee_engine_id():
     return next(i.identifier for i in items if i.identifier.startswith("BLENDER_EEVEE"))
 
 
-# EEVEE panels for data EdgeLight reads the way EEVEE does: the world's Background node (the
-# only world colour 5.0 renders).
-_EEVEE_PANELS = ("EEVEE_WORLD_PT_surface",)
+# Blender's own panels EdgeLight shows, beyond the engine-neutral ones, by what they show. The
+# names are the same in 3.4, 4.2, 4.5 and 5.0 (looked up in each; the EEVEE Next and 5.0
+# renames touched only panels EdgeLight leaves out), so one table serves every version; a name a
+# version lacks is passed over.
+SHOWN_PANELS = (
+    "EEVEE_MATERIAL_PT_context_material",  # the slot list, New and the material's ID template
+    "EEVEE_MATERIAL_PT_surface",  # the output's Surface: the Principled BSDF's inputs (base colour,
+                                  # roughness, metallic, specular, alpha), or without nodes the
+                                  # viewport colour, roughness and metallic EdgeLight reads then
+    "EEVEE_WORLD_PT_surface",  # the world's Background node, or world.color without nodes
+)
+# Engine-neutral panels ('BLENDER_RENDER') left out, by name part: Freestyle's (EdgeLight draws
+# its own lines), motion blur (not supported), and the light's type-only panel and area size
+# (EdgeLight's own light panel shows the type with the settings it reads). EEVEE's light panel,
+# shadow, volume, material settings and preview panels are never added: they show settings
+# EdgeLight ignores.
+_HIDDEN = ("freestyle", "motion_blur", "DATA_PT_light", "DATA_PT_area")
+
+
+def _hidden(name):
+    lower = name.lower()
+    return name in _HIDDEN or any(part in lower for part in _HIDDEN if part.islower())
 
 
 def compat_panels():
     """Built-in panels that list Blender's own engines and should show for EdgeLight too."""
+    named = [(name, getattr(bpy.types, name)) for name in dir(bpy.types)]
+    named = [(name, cls) for name, cls in named if isinstance(getattr(cls, "COMPAT_ENGINES", None), set)]
+    # The node editor's copies of panels (NODE_DATA_PT_light, ...) share their original's set:
+    # a set any hidden panel uses stays untouched.
+    hidden_sets = {id(cls.COMPAT_ENGINES) for name, cls in named if _hidden(name)}
     panels = []
-    eevee = eevee_engine_id()
-    for name in dir(bpy.types):
-        cls = getattr(bpy.types, name)
-        engines = getattr(cls, "COMPAT_ENGINES", None)
-        if not isinstance(engines, set):
+    for name, cls in named:
+        engines = cls.COMPAT_ENGINES
+        if id(engines) in hidden_sets:
             continue
-        # 'BLENDER_RENDER' marks the engine-neutral panels (output, camera, light, colour
-        # management); Workbench-only ones (its lighting, colour, film) don't apply to EdgeLight.
-        if "BLENDER_RENDER" in engines:
-            if name.startswith(("MATERIAL_PT_", "EEVEE_MATERIAL_PT_")):
-                continue  # our own material panel replaces these
-            if "freestyle" in name.lower():
-                continue  # EdgeLight draws its own lines, Freestyle's settings would mislead
-            panels.append(cls)
-        elif name in _EEVEE_PANELS and eevee in engines:
+        # 'BLENDER_RENDER' marks the engine-neutral panels (output, camera, colour management,
+        # custom properties); Workbench-only ones (its lighting, colour, film) don't apply.
+        if "BLENDER_RENDER" in engines or name in SHOWN_PANELS:
             panels.append(cls)
     return panels
 
@@ -137,3 +153,23 @@ def texture(size, fmt, data=None):
     if data is None:
         return gpu.types.GPUTexture(size, format=fmt)
     return gpu.types.GPUTexture(size, format=fmt, data=data)
+
+
+def write_pass_channels(render_pass, pixels):
+    """pixels: (h * w, channels) float32 for a pass of any channel count (1 Depth, 3 Normal, 4
+    colour). 4.2+ take a flat array, 3.4 one row per pixel."""
+    pixels = np.ascontiguousarray(pixels, np.float32).reshape(-1, render_pass.channels)
+    try:
+        render_pass.rect.foreach_set(pixels.reshape(-1))
+    except TypeError:
+        render_pass.rect.foreach_set(pixels)
+
+
+def polygon_normals(mesh):
+    """(polygons, 3) float32 unit normals of the polygons (4.1+ keeps them in polygon_normals)."""
+    out = np.empty(len(mesh.polygons) * 3, dtype=np.float32)
+    if hasattr(mesh, "polygon_normals"):
+        mesh.polygon_normals.foreach_get("vector", out)
+    else:
+        mesh.polygons.foreach_get("normal", out)
+    return out.reshape(-1, 3)

@@ -10,7 +10,7 @@ import numpy as np
 
 from . import library_check
 
-ABI_VERSION = 3
+ABI_VERSION = 4
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -70,6 +70,7 @@ class MeshDesc(ctypes.Structure):
         ("edge_marks", _u32p), ("edge_bevel_weights", _f32p),
         ("triangle_materials", _u32p),
         ("vertex_normals", _f32p),
+        ("triangle_normals", _f32p),
     ]
 
 
@@ -250,7 +251,8 @@ class Mesh(_Handle):
     _destroy = "el_mesh_destroy"
 
     def __init__(self, positions, triangles, *, edges=None, triangle_edges=None, edge_marks=None,
-                 bevel_weights=None, triangle_materials=None, vertex_normals=None, lib=None):
+                 bevel_weights=None, triangle_materials=None, vertex_normals=None, triangle_normals=None,
+                 lib=None):
         lib = lib or load()
         keep = {
             "positions": _contiguous(positions, np.float32, 3),
@@ -261,6 +263,7 @@ class Mesh(_Handle):
             "bevel_weights": _contiguous(bevel_weights, np.float32),
             "triangle_materials": _contiguous(triangle_materials, np.uint32),
             "vertex_normals": _contiguous(vertex_normals, np.float32, 3),
+            "triangle_normals": _contiguous(triangle_normals, np.float32, 3),
         }
         d = MeshDesc()
         d.positions = _ptr(keep["positions"], ctypes.c_float)
@@ -275,6 +278,7 @@ class Mesh(_Handle):
         d.edge_bevel_weights = _ptr(keep["bevel_weights"], ctypes.c_float)
         d.triangle_materials = _ptr(keep["triangle_materials"], ctypes.c_uint32)
         d.vertex_normals = _ptr(keep["vertex_normals"], ctypes.c_float)
+        d.triangle_normals = _ptr(keep["triangle_normals"], ctypes.c_float)
         handle = _P()
         lib.call("el_mesh_create", ctypes.byref(d), ctypes.byref(handle))
         super().__init__(lib, handle)

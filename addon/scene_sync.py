@@ -115,6 +115,17 @@ def triangle_edge_map(mesh, tri_loops):
     return out
 
 
+def polygon_unit_normals(mesh, positions):
+    """Blender's polygon normals, exactly unit, or zero for a polygon without area (Blender gives
+    those a made-up unit normal; the library then treats their faces as degenerate)."""
+    n = compat.polygon_normals(mesh).astype(np.float64)
+    area = _foreach(mesh.polygons, "area", np.float64)
+    extent = float(np.ptp(positions, axis=0).max()) if len(positions) else 0.0
+    length = np.linalg.norm(n, axis=1, keepdims=True)
+    ok = np.isfinite(length) & (length > 0.5) & (area[:, None] > 1e-12 * extent * extent)
+    return np.where(ok, n / np.where(ok, length, 1.0), 0.0).astype(np.float32)
+
+
 def _first_two_faces(tri_edges, edge_count):
     """For each edge the first two triangles that use it (-1 where none)."""
     sides = tri_edges.reshape(-1).astype(np.int64)
@@ -152,9 +163,14 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
              | compat.edge_seam(mesh).astype(np.uint32) * native.MARK_SEAM
              | compat.edge_freestyle(mesh).astype(np.uint32) * native.MARK_FREESTYLE)
     bevel = np.clip(compat.edge_bevel_weight(mesh), 0.0, 1.0).astype(np.float32)
+    # Each triangle classifies by its polygon's normal: a sliver's own normal is noise, and a
+    # zero-area piece along a polygon's side (collinear corners) would drop that side's edge.
+    tri_poly = _foreach(mesh.loop_triangles, "polygon_index", np.int64)
+    tri_normals = polygon_unit_normals(mesh, positions)[tri_poly]
     try:
         m = native.Mesh(positions, tri_verts, edges=edges, triangle_edges=tri_edges, edge_marks=marks,
-                        bevel_weights=bevel, triangle_materials=tri_slot.astype(np.uint32), lib=lib)
+                        bevel_weights=bevel, triangle_materials=tri_slot.astype(np.uint32),
+                        triangle_normals=tri_normals, lib=lib)
     except native.NativeError as e:
         raise SkipObject(f"{name}: {e.message}") from None
     info = m.info()

@@ -100,9 +100,13 @@ def frame_data(camera, projection, scene):
 
 
 class Targets:
-    """Float render targets of one size, reused across samples and frames."""
+    """Float render targets of one size, reused across samples and frames.
 
-    def __init__(self, width, height):
+    normal / surface_sum: extra attachments for the Normal and Surface render passes, made only
+    when a render asks for them (their programs are variants that write them, so a render
+    without those passes pays nothing)."""
+
+    def __init__(self, width, height, normal=False, surface_sum=False):
         self.size = (width, height)
         self.surface_color = compat.texture((width, height), 'RGBA32F')
         self.surface_depth = compat.texture((width, height), 'R32F')  # 1 / view depth; 0 = empty
@@ -111,10 +115,14 @@ class Targets:
         self.result = compat.texture((width, height), 'RGBA32F')
         self.lines = compat.texture((width, height), 'RGBA32F')
         self.line_depth = compat.texture((width, height), 'DEPTH_COMPONENT32F')
-        self.surface_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.surface_color, self.surface_depth))
+        self.normal = compat.texture((width, height), 'RGBA32F') if normal else None  # world normal; 0 = empty
+        self.surface_sum = compat.texture((width, height), 'RGBA32F') if surface_sum else None  # sample mean
+        extra = (self.normal,) if normal else ()
+        self.surface_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.surface_color, self.surface_depth, *extra))
         # The surface pass's depth: the edge pass depth-tests against it (read only).
         self.highlight_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.highlight,))
-        self.result_fb = gpu.types.GPUFrameBuffer(color_slots=(self.result,))
+        extra = (self.surface_sum,) if surface_sum else ()
+        self.result_fb = gpu.types.GPUFrameBuffer(color_slots=(self.result, *extra))
         self.line_fb = gpu.types.GPUFrameBuffer(depth_slot=self.line_depth, color_slots=(self.lines,))
         self.lines_empty = False  # the line target holds no stroke (cleared, none drawn since)
 
@@ -175,8 +183,9 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False):
         gpu.state.depth_mask_set(True)
         gpu.state.blend_set('NONE')
         gpu.state.face_culling_set('NONE')
+        normal = {"EL_NORMAL_PASS": 1} if targets.normal is not None else {}
         for mode, items in sorted(draws.items()):
-            shader = shader_lib.get("surface", {"EL_SURFACE_MODE": mode})
+            shader = shader_lib.get("surface", {"EL_SURFACE_MODE": mode, **normal})
             shader.bind()
             shader.uniform_block("frame", ubo)
             for matrix, s, batch in items:
@@ -224,8 +233,9 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
 
 
 def draw_composite(targets, background, full_screen, weight):
-    """Adds weight x the composited sample to the result (cleared by the caller)."""
-    shader = shader_lib.get("composite")
+    """Adds weight x the composited sample to the result (cleared by the caller), and the
+    surface alone to surface_sum when the Surface pass is asked for."""
+    shader = shader_lib.get("composite", {"EL_SURFACE_PASS": 1} if targets.surface_sum is not None else None)
     with targets.result_fb.bind():
         gpu.state.blend_set('ADDITIVE_PREMULT')
         shader.bind()
@@ -274,25 +284,32 @@ def view_line_segments(scene, camera, line_settings, counters=None):
     return out
 
 
-def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=None, view_batches=None):
+def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=None, view_batches=None,
+         first_sample=None):
     """Draws `scene` from `camera` into targets.result (GPU only, nothing read back).
 
     view_batches: per instance, the view-dependent line batches for this camera.
-    progress(fraction) and cancelled() are called between samples."""
+    progress(samples done, samples) and cancelled() are called between samples;
+    first_sample(), when given, right after the first (unjittered) sample's surface pass."""
     full_screen = batches.fullscreen_batch()
     background = (*scene.ambient, 0.0 if settings.transparent else 1.0)
     stats = Stats(objects=len(scene.instances))
     samples = max(1, int(settings.samples))
     with targets.result_fb.bind():
         targets.result_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
+    # Between samples too, a cancel check first waits for the queued draws: the loop queues
+    # samples far faster than llvmpipe draws them, and a cancel would land after all of them.
+    between = CancelCheck(targets.result, cancelled) if cancelled else None
     for s in range(samples):
-        if cancelled and cancelled():
+        if cancelled and (cancelled() if s == 0 else between()):
             break
         projection = jittered_projection(np.asarray(camera.projection, np.float64), camera.width, camera.height, *jitter(s))
         data = frame_data(camera, projection, scene)
         ubo = gpu.types.GPUUniformBuf(gpu.types.Buffer('FLOAT', data.size, data))
         whiteout = settings.lines is not None and settings.lines.whiteout
         draw_surface(targets, scene, gpu_meshes, ubo, whiteout)
+        if s == 0 and first_sample:
+            first_sample()
         # The edge and line passes run once, on the unjittered first sample: their coverage is
         # box-filtered across the edge or stroke analytically, so later samples reuse them and
         # only the surface is re-jittered (docs/addon.md).
@@ -309,7 +326,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         draw_composite(targets, background, full_screen, 1.0 / samples)
         stats.samples += 1
         if progress:
-            progress((s + 1) / samples)
+            progress(s + 1, samples)
     stats.samples_requested = samples
     return stats
 
@@ -342,25 +359,59 @@ class CancelCheck:
 
 
 # Line segments per batch in a final render: a cancel lands between batches (1000-pixel strokes
-# on the toon sample at 960 x 540 take about 10 ms per segment on llvmpipe).
-LINE_CHUNK = 256
+# on the toon sample at 960 x 540 take about 10 ms per segment on llvmpipe, so about 1 s each).
+LINE_CHUNK = 128
 
 
-def render(scene, camera, settings, progress=None, cancelled=None, keep=None):
+# The partial image is read back at most this often (seconds): a full-resolution float read
+# back waits for the GPU to drain and costs about as much as a cheap sample (docs/addon.md).
+PREVIEW_INTERVAL = 1.0
+# Render passes a final render can read back besides the image (render_passes.py names them).
+PASS_BUFFERS = ("surface", "highlight", "lines", "depth", "normal")
+
+
+def render(scene, camera, settings, progress=None, cancelled=None, keep=None, passes=None, preview=None):
     """Final render: draws and reads back ((h, w, 4) scene-linear float RGBA, Stats).
 
-    `keep`, when a dict, receives the last sample's surface, highlight and depth buffers."""
+    `keep`, when a dict, receives the last sample's surface, highlight and depth buffers.
+    `passes`, when a dict, names the render-pass buffers to read back (keys of PASS_BUFFERS) and
+    receives them: "surface" the sample mean of the surface, "highlight" and "lines" the
+    premultiplied bands and ink, "depth" the first sample's 1 / view depth (0 = empty), "normal"
+    its world normals. Only what is named is drawn into or read back.
+    `preview(pixels)`, when given, receives the image accumulated so far, at most once per
+    PREVIEW_INTERVAL seconds of drawing."""
     w, h = camera.width, camera.height
-    targets = Targets(w, h)
+    wanted = set(passes or ())
+    targets = Targets(w, h, normal="normal" in wanted, surface_sum="surface" in wanted)
     gpu_meshes = {}
     for inst in scene.instances:
         if id(inst.mesh) not in gpu_meshes:
             gpu_meshes[id(inst.mesh)] = batches.GpuMesh(inst.mesh, LINE_CHUNK)
     view_batches = [line_pass.line_batches(segs, LINE_CHUNK) for segs in view_line_segments(scene, camera, settings.lines)]
-    stats = draw(scene, camera, settings, targets, gpu_meshes, progress, cancelled, view_batches)
+    last_preview = [time.monotonic()]
+
+    def each_sample(done, total):
+        if progress:
+            progress(done, total)
+        if preview and done < total and time.monotonic() - last_preview[0] >= PREVIEW_INTERVAL:
+            preview(read(targets.result, w, h) * (total / done))
+            last_preview[0] = time.monotonic()
+
+    def first_sample():  # depth and normal of the pixel centres, before later samples jitter them
+        for name, texture in (("depth", targets.surface_depth), ("normal", targets.normal)):
+            if name in wanted:
+                passes[name] = read(texture, w, h)
+
+    stats = draw(scene, camera, settings, targets, gpu_meshes, each_sample, cancelled, view_batches,
+                 first_sample if wanted & {"depth", "normal"} else None)
     pixels = read(targets.result, w, h)
-    if 0 < stats.samples < stats.samples_requested:  # cancelled: rescale what was accumulated
-        pixels *= stats.samples_requested / stats.samples
+    scale = stats.samples_requested / stats.samples if 0 < stats.samples < stats.samples_requested else 1.0
+    pixels *= scale  # cancelled: rescale what was accumulated
+    if "surface" in wanted:
+        passes["surface"] = read(targets.surface_sum, w, h) * scale
+    for name, texture in (("highlight", targets.highlight), ("lines", targets.lines)):
+        if name in wanted:
+            passes[name] = read(texture, w, h)
     if keep is not None:
         keep["surface"] = read(targets.surface_color, w, h)
         keep["highlight"] = read(targets.highlight, w, h)

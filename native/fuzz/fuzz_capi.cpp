@@ -126,7 +126,7 @@ void fuzz_mesh(FuzzedDataProvider& p) {
     d.triangle_count = tc;
 
     std::vector<uint32_t> edges, tri_edges, marks, mats;
-    std::vector<float> bevel, vnormals;
+    std::vector<float> bevel, vnormals, tnormals;
     if (p.ConsumeBool()) {  // host topology
         const uint32_t ec = p.ConsumeIntegralInRange<uint32_t>(0, 64);
         edges.resize(size_t(ec) * 2 + 1);
@@ -160,6 +160,17 @@ void fuzz_mesh(FuzzedDataProvider& p) {
         vnormals.resize(size_t(vc) * 3 + 1);
         for (auto& n : vnormals) n = p.ConsumeBool() ? any_float(p) : p.ConsumeFloatingPointInRange(-1.0f, 1.0f);
         d.vertex_normals = vnormals.data();
+    }
+    if (p.ConsumeBool()) {
+        // Unit, zero, non-unit and non-finite face normals: the last two must be refused.
+        tnormals.resize(size_t(tc) * 3 + 1);
+        for (auto& n : tnormals) n = p.ConsumeBool() ? any_float(p) : p.ConsumeFloatingPointInRange(-1.0f, 1.0f);
+        for (size_t t = 0; t + 2 < tnormals.size() && p.ConsumeBool(); t += 3) {
+            const float l = std::sqrt(tnormals[t] * tnormals[t] + tnormals[t + 1] * tnormals[t + 1] +
+                                      tnormals[t + 2] * tnormals[t + 2]);
+            if (l > 0.0f && std::isfinite(l)) for (int k = 0; k < 3; ++k) tnormals[t + k] /= l;
+        }
+        d.triangle_normals = tnormals.data();
     }
 
     el_mesh* mesh = nullptr;

@@ -23,10 +23,17 @@ void compute_face_normals(const MeshData& mesh, Geometry& geom) {
         const double len = glm::length(cr);
         const double scale = std::max({glm::dot(e1, e1), glm::dot(e2, e2), glm::dot(e3, e3)});
         // Relative to the longest side: below ~float epsilon the normal is noise.
-        const bool degenerate = !(len > 1e-7 * scale);
-        const glm::vec3 nrm = degenerate ? glm::vec3(0.0f) : glm::vec3(cr / len);
-        geom.face_normals[t] = nrm;
-        geom.face_offsets[t] = degenerate ? 0.0f : float(glm::dot(cr / len, a));
+        bool degenerate = !(len > 1e-7 * scale);
+        glm::dvec3 nrm = degenerate ? glm::dvec3(0.0) : cr / len;
+        if (!mesh.host_face_normals.empty()) {
+            // The face the triangle was cut from decides: a sliver's own normal is noise, and a
+            // zero-area piece of a proper polygon still lies in that polygon's plane.
+            const glm::dvec3 h(mesh.host_face_normals[t]);
+            degenerate = glm::dot(h, h) == 0.0;
+            nrm = degenerate ? glm::dvec3(0.0) : glm::normalize(mesh.orient.flips[t] ? -h : h);
+        }
+        geom.face_normals[t] = glm::vec3(nrm);
+        geom.face_offsets[t] = degenerate ? 0.0f : float(glm::dot(nrm, a));
         geom.face_degenerate[t] = degenerate ? 1 : 0;
     }
     const size_t padded = (size_t(n) + 63) / 64 * 64;

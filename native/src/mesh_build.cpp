@@ -30,6 +30,10 @@ std::shared_ptr<MeshData> build_mesh(const el_mesh_desc& d) {
     apply_orientation(*m, m->orient);
     if (d.triangle_materials)
         m->triangle_materials.assign(d.triangle_materials, d.triangle_materials + d.triangle_count);
+    if (d.triangle_normals && d.triangle_count > 0) {
+        const auto* n = reinterpret_cast<const glm::vec3*>(d.triangle_normals);
+        m->host_face_normals.assign(n, n + d.triangle_count);
+    }
 
     compute_face_normals(*m, m->geom);
     if (d.vertex_normals) {

@@ -60,6 +60,7 @@ struct MeshData {
     std::vector<uint32_t> edge_marks;        // host marks per edge (empty if none)
     std::vector<float> bevel_weights;        // per edge (empty if none)
     std::vector<uint32_t> triangle_materials;// per triangle (empty if none)
+    std::vector<glm::vec3> host_face_normals;// per triangle, input winding (empty if none)
     Topology topo;                           // triangle_edges follow the oriented winding
     Orientation orient;
     Geometry geom;

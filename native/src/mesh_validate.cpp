@@ -65,6 +65,19 @@ void check_finite(const float* v, uint32_t count, const char* what) {
             fail(EL_ERR_NON_FINITE, std::string(what) + " of vertex " + s(i / 3) + " is not finite");
 }
 
+void check_face_normals(const float* n, uint32_t count) {
+    for (uint32_t t = 0; t < count; ++t) {
+        const float x = n[3 * t], y = n[3 * t + 1], z = n[3 * t + 2];
+        if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+            fail(EL_ERR_NON_FINITE, "normal of triangle " + s(t) + " is not finite");
+        const float l2 = x * x + y * y + z * z;
+        // Unit, or zero for a face without a normal; float normals are unit to ~1e-6.
+        if (l2 != 0.0f && std::fabs(l2 - 1.0f) > 1e-3f)
+            fail(EL_ERR_INVALID_ARGUMENT, "normal of triangle " + s(t) + " has length " +
+                                              std::to_string(std::sqrt(l2)) + ", not 1 (or 0)");
+    }
+}
+
 }  // namespace
 
 void validate_mesh_desc(const el_mesh_desc& d) {
@@ -89,6 +102,7 @@ void validate_mesh_desc(const el_mesh_desc& d) {
     }
     check_finite(d.positions, d.vertex_count, "position");
     if (d.vertex_normals) check_finite(d.vertex_normals, d.vertex_count, "normal");
+    if (d.triangle_normals) check_face_normals(d.triangle_normals, d.triangle_count);
     if (d.triangle_count > 0) check_triangles(d);
     if (has_edges) check_host_edges(d);
 }

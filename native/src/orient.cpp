@@ -5,7 +5,9 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <utility>
+#include <vector>
 
 namespace el {
 
@@ -36,6 +38,38 @@ bool run_same_way(const uint32_t* tris, uint32_t f0, uint32_t f1, uint32_t a, ui
     return true;
 }
 
+constexpr uint32_t kNoSide = 0xFFFFFFFFu;
+
+// For each triangle side that is no edge (a host polygon's diagonal), the side 3u + s of the
+// other triangle across it, or kNoSide. The two pieces of a polygon on either side of a diagonal
+// share the polygon's winding, so orientation must carry across it as across an edge; otherwise
+// a piece joined to the rest only through diagonals would keep the input winding while its
+// polygon's other pieces turn.
+std::vector<uint32_t> diagonal_neighbours(const uint32_t* tris, const uint32_t* tedges, uint32_t n) {
+    std::vector<std::pair<uint64_t, uint32_t>> sides;
+    for (uint32_t t = 0; t < n; ++t)
+        for (uint32_t s = 0; s < 3; ++s) {
+            const uint32_t a = tris[3 * size_t(t) + s], b = tris[3 * size_t(t) + (s + 1) % 3];
+            if (tedges[3 * size_t(t) + s] != EL_NO_EDGE || a == b) continue;
+            const uint64_t key = (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+            sides.emplace_back(key, 3 * t + s);
+        }
+    std::vector<uint32_t> out;
+    if (sides.empty()) return out;
+    out.assign(size_t(n) * 3, kNoSide);
+    std::sort(sides.begin(), sides.end());
+    for (size_t i = 0; i < sides.size();) {
+        size_t j = i + 1;
+        while (j < sides.size() && sides[j].first == sides[i].first) ++j;
+        if (j - i == 2) {  // exactly two pieces meet there: a diagonal; anything else is not
+            out[sides[i].second] = sides[i + 1].second;
+            out[sides[i + 1].second] = sides[i].second;
+        }
+        i = j;
+    }
+    return out;
+}
+
 }  // namespace
 
 Orientation find_orientation(const MeshData& m) {
@@ -52,6 +86,9 @@ Orientation find_orientation(const MeshData& m) {
     const uint32_t* ev = m.topo.edge_vertices.data();
     // Breadth-first over faces with an explicit queue (no recursion: millions of triangles). Each
     // face enters it once, so one array of n holds every component's faces in turn.
+    const std::vector<uint32_t> diagonal = m.topo.triangle_edges.size() == size_t(n) * 3
+                                               ? diagonal_neighbours(tris, tedges, n)
+                                               : std::vector<uint32_t>();
     UnsetBigArray<uint32_t> queue(n);
     uint32_t tail = 0;
     for (uint32_t seed = 0; seed < n; ++seed) {
@@ -76,7 +113,17 @@ Orientation find_orientation(const MeshData& m) {
             volume += p ? -v : v;
             for (uint32_t s = 0; s < 3; ++s) {
                 const uint32_t e = tedges[3 * size_t(t) + s];
-                if (e == EL_NO_EDGE) continue;  // a polygon's diagonal or a repeated corner
+                if (e == EL_NO_EDGE) {  // a polygon's diagonal (or a repeated corner: no neighbour)
+                    const uint32_t across = diagonal.empty() ? kNoSide : diagonal[3 * size_t(t) + s];
+                    if (across == kNoSide) continue;
+                    const uint32_t u = across / 3;
+                    const bool same = c[s] == tris[across];
+                    if (parity[u] == kUnvisited) {
+                        parity[u] = uint8_t(p ^ same);
+                        queue[tail++] = u;
+                    }
+                    continue;
+                }
                 const uint32_t begin = offsets[e];
                 if (offsets[e + 1] - begin != 2) {  // border and non-manifold edges do not propagate
                     closed = false;

@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 3u
+#define EL_ABI_VERSION 4u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -99,6 +99,13 @@ typedef struct el_mesh_desc {
     /* Optional: unit vertex normals (3 * vertex_count) for smooth contours; if NULL the library
      * computes angle-weighted ones. */
     const float* vertex_normals;
+    /* Optional: per triangle, the unit normal of the face it was cut from (3 * triangle_count),
+     * e.g. its polygon's normal in a triangulated n-gon. Classification and facing then use it
+     * instead of the triangle's own normal, which a sliver of a near-planar polygon gets wrong,
+     * and a zero-area triangle of a proper polygon (collinear corners along its side) is not
+     * degenerate. Given in the input winding (the library negates it where it reorients); a
+     * zero entry marks a face with no normal (degenerate). */
+    const float* triangle_normals;
 } el_mesh_desc;
 
 /* Validates every input, builds edges and edge->face adjacency (or takes the host's), face
