@@ -6,16 +6,18 @@ bl_info = {
     "version": (0, 1, 0),
     "blender": (3, 4, 0),
     "location": "Render Properties > Render Engine > EdgeLight",
-    "description": "Thin highlights on rounded edges without bevel geometry, live and in final renders",
+    "description": "Rounded-edge highlights without bevel geometry, ink lines and toon shading, live and in final renders",
     "category": "Render",
 }
 
-from . import engine, properties, ui, versioning  # noqa: E402
+from . import color_ramp, engine, properties, render_passes, ui, versioning  # noqa: E402
 
 
 def register():
     properties.register()
     versioning.register()
+    color_ramp.register()
+    render_passes.register()
     engine.register()
     ui.register()
 
@@ -23,5 +25,7 @@ def register():
 def unregister():
     ui.unregister()
     engine.unregister()
+    render_passes.unregister()
+    color_ramp.unregister()
     versioning.unregister()
     properties.unregister()

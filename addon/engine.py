@@ -4,13 +4,14 @@ Every failure is loud: whatever goes wrong in render, view_update or view_draw b
 report naming it. An ERROR report from render() is what makes Blender treat the frame as failed:
 it is not saved, and `blender -b -f` exits with code 1 (docs/addon.md, "When a render fails").
 """
+import time
 import traceback
 
 import bpy
 import gpu
 import numpy as np
 
-from . import compat, lines, native, scene_sync, viewport
+from . import compat, lines, native, render_passes, scene_sync, viewport
 from .passes import frame, toon
 
 # Tests set `capture = True` to receive the last render's record (pixels, pass buffers, camera,
@@ -140,6 +141,11 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         self.update_stats("EdgeLight", f"Error: {message}")
 
     # ---- final render -----------------------------------------------------------------------
+    def update_render_passes(self, scene=None, renderlayer=None):
+        """The passes a view layer's render result holds (View Layer -> Passes, the compositor's
+        Render Layers node): Blender asks before a render and when a pass setting changes."""
+        render_passes.register_passes(self, scene, renderlayer)
+
     def _report(self, level, message, record):
         record.setdefault("messages", []).append((level, message))
         self.report({level}, message)
@@ -149,6 +155,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         record = {"layer": layer}
         if not capture:
             last_render.clear()  # a render keeps nothing once it ends
+        else:
+            last_render["rendering"] = record  # live while it renders: the UI test reads progress
         try:
             self._render_layer(depsgraph, layer, record)
         except RenderRefused as e:
@@ -181,12 +189,26 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
                 raise RenderRefused(f"Blender asked for {size[0]} x {size[1]} pixels where EdgeLight "
                                     f"computed a region of {region[2]} x {region[3]}")
             record["result_layer"] = result.layers[0].name
-            pixels = self._render_pixels(depsgraph, camera, lib, record)
-            compat.write_pass(result.layers[0].passes["Combined"], pixels.reshape(-1, 4))
+            view_layer = depsgraph.view_layer
+            buffers = render_passes.buffers_wanted(view_layer)
+            combined = result.layers[0].passes["Combined"]
+
+            def preview(pixels):  # the partial image in the Image Editor while samples accumulate
+                compat.write_pass(combined, pixels.reshape(-1, 4))
+                self.update_result(result)
+                if capture:
+                    record["previews"] = record.get("previews", 0) + 1
+
+            pixels = self._render_pixels(depsgraph, camera, lib, record, buffers, preview)
+            compat.write_pass(combined, pixels.reshape(-1, 4))
+            written = {} if capture else None
+            render_passes.write(result.layers[0], view_layer, buffers, written)
+            if capture:
+                record["passes"] = written
         finally:
             self.end_result(result)
 
-    def _render_pixels(self, depsgraph, camera, lib, record):
+    def _render_pixels(self, depsgraph, camera, lib, record, buffers, preview):
         self.update_stats("EdgeLight", "Gathering scene")
         toon.forget_images()  # an image may have been painted since the last render
         settings = depsgraph.scene.edgelight
@@ -200,13 +222,15 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
                            transparent=depsgraph.scene.render.film_transparent, lines=line_settings)
         keep = {} if capture else None
         reported = len(data.reports)
-        total = max(1, int(settings.samples))
 
-        def progress(fraction):
-            self.update_progress(fraction)
-            self.update_stats("EdgeLight", f"Sample {round(fraction * total)}/{total}")
+        def progress(done, total):
+            self.update_progress(done / total)
+            self.update_stats("EdgeLight", f"Sample {done}/{total}")
+            if capture:
+                record.setdefault("progress", []).append((done, total, time.monotonic()))
 
-        pixels, stats = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=keep)
+        pixels, stats = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=keep,
+                                     passes=buffers, preview=preview)
         for line in data.reports[reported:]:  # what the passes skipped
             self._report('WARNING', f"EdgeLight: {line}", record)
         if stats.samples == 0 and not self.test_break():

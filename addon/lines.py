@@ -82,16 +82,27 @@ def settings_of(scene_settings):
 
 @dataclass
 class LineSegments:
-    """Object-space segments of one line type: ends, the two face normals (for the depth bias),
-    and per end the distance to its chain's nearest free end over the chain's length."""
+    """Object-space segments of one line type: ends, the two face normals, per end the distance
+    to its chain's nearest free end over the chain's length, and the faces the segment lies on
+    as surface ids (MeshExtract.surface_ids: what the surface pass writes; 0 for none), which
+    decide its visibility (docs/lines.md)."""
     p0: np.ndarray
     p1: np.ndarray
     n1: np.ndarray
     n2: np.ndarray
     taper: np.ndarray
+    faces: np.ndarray = None           # (N, 2) float32
 
     def __len__(self):
         return len(self.p0)
+
+
+def surface_ids(edge_data, faces):
+    """Triangle indices (-1: none) -> the ids the surface pass writes for them (0: none), as
+    float32 (exact below 2^24 triangles per object)."""
+    faces = np.asarray(faces, np.int64)
+    ids = np.where(faces >= 0, edge_data.surface_id[np.maximum(faces, 0)], 0)
+    return np.ascontiguousarray(ids, np.float32)
 
 
 def taper_params(links, chains):
@@ -117,8 +128,10 @@ def _edge_segments(edge_data, mesh, selected, taper):
         t = taper_params(*mesh.chain_edges(sel))
     else:
         t = np.full((len(sel), 2), NO_TAPER, np.float32)
+    faces = np.stack([edge_data.face_a[sel], edge_data.face_b[sel]], axis=1)
     return LineSegments(edge_data.positions[e[:, 0]], edge_data.positions[e[:, 1]],
-                        np.ascontiguousarray(n[:, :3]), np.ascontiguousarray(n[:, 3:]), t)
+                        np.ascontiguousarray(n[:, :3]), np.ascontiguousarray(n[:, 3:]), t,
+                        surface_ids(edge_data, faces))
 
 
 def static_lines(edge_data, mesh, settings):
@@ -173,5 +186,7 @@ def view_lines(extract, index, matrix, camera, settings, counters=None):
             t = taper_params(*views.contour_chains())
         else:
             t = np.full((len(tris), 2), NO_TAPER, np.float32)
-        out["contour"] = LineSegments(np.ascontiguousarray(pts[:, 0]), np.ascontiguousarray(pts[:, 1]), fn, fn, t)
+        faces = np.stack([tris, tris], axis=1) if len(tris) else np.zeros((0, 2), np.int64)
+        out["contour"] = LineSegments(np.ascontiguousarray(pts[:, 0]), np.ascontiguousarray(pts[:, 1]), fn, fn, t,
+                                      surface_ids(d, faces))
     return out

@@ -2,7 +2,7 @@
 from dataclasses import dataclass, replace
 import math
 
-from . import compat
+from . import color_ramp, compat
 
 DEFAULT_COLOR = (0.8, 0.8, 0.8)
 
@@ -49,8 +49,8 @@ def toon_of(settings, base):
     mode = {'PHONG': 0, 'RAMP': 1, 'XTOON': 2}[settings.shading]
     if mode == 0:
         return PHONG
-    stops = tuple(sorted((float(st.position), tuple(st.color)) for st in settings.ramp)) or default_ramp(base)
-    return Toon(mode, stops, settings.ramp_interpolation == 'LINEAR', settings.xtoon_image,
+    stops, smooth = color_ramp.stops_of(settings)
+    return Toon(mode, stops or default_ramp(base), smooth, settings.xtoon_image,
                 settings.xtoon_axis == 'ORIENTATION', float(settings.xtoon_near), float(settings.xtoon_far))
 
 
@@ -82,6 +82,16 @@ def _principled(material):
     return None
 
 
+def base_color_of(material):
+    """The colour EdgeLight shades a material with (before metallic): the Principled BSDF's Base
+    Color, or the viewport colour without one."""
+    node = _principled(material)
+    if node is None:
+        return tuple(material.diffuse_color[:3])
+    c = _input(node, "Base Color")
+    return tuple(c[:3]) if c is not None else DEFAULT_COLOR
+
+
 def shading_of(material):
     """Shading for a material slot's material, or the default look when there is none."""
     if material is None:
@@ -89,8 +99,7 @@ def shading_of(material):
                        True, 1.0, 0.01, (1.0, 1.0, 1.0), frozenset({'ANGLE', 'SHARP', 'BEVEL'}), 30.0, PHONG)
     node = _principled(material)
     if node is not None:
-        c = _input(node, "Base Color")
-        base = tuple(c[:3]) if c is not None else DEFAULT_COLOR
+        base = base_color_of(material)
         roughness = _float(node, 0.5, "Roughness")
         metallic = _float(node, 0.0, "Metallic")
         specular = _float(node, 0.5, "Specular", "Specular IOR Level")  # renamed in 4.0

@@ -1,11 +1,16 @@
 """EdgeLight settings stored in the .blend: per material and per scene."""
+import math
+
 import bpy
+
+from . import line_units
 
 # The settings layout. Bumped when a stored property is renamed or changes meaning; each bump
 # gets a step in versioning.py that upgrades files saved with the layout before.
 #   1: first layout
 #   2: material `enabled` -> `use_rounding`
-SETTINGS_VERSION = 2
+#   3: material `ramp` (a list of stops) and `ramp_interpolation` -> `shade_ramp` (a colour ramp)
+SETTINGS_VERSION = 3
 
 
 def _tag(self, context):
@@ -14,26 +19,19 @@ def _tag(self, context):
     self.id_data.update_tag()
 
 
-class EdgeLightRampStop(bpy.types.PropertyGroup):
-    position: bpy.props.FloatProperty(
-        update=_tag, name="Position", default=0.0, min=0.0, max=1.0,
-        description="Where this colour starts along the lighting N.L (0 unlit, 1 facing the light)")
-    color: bpy.props.FloatVectorProperty(
-        update=_tag, name="Color", subtype='COLOR', size=3, default=(0.8, 0.8, 0.8), min=0.0, soft_max=1.0)
-
-
 class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
     use_rounding: bpy.props.BoolProperty(
         update=_tag, name="Rounded Edges", default=True,
         description="Round this material's chosen edges with a thin highlight, like a bevel would")
+    # Stored as `K` (the paper's name): files and scripts keep working.
     K: bpy.props.FloatProperty(
-        update=_tag, name="K", default=1.0, min=0.0, soft_max=4.0,
-        description="Blend gain of the highlight: 1 draws each edge at the pixel coverage a real "
-                    "rounded edge of this radius has (the paper's K = focal length); 0 turns the "
-                    "highlight off; larger values exaggerate it")
+        update=_tag, name="Highlight Strength", default=1.0, min=0.0, soft_max=4.0,
+        description="How strongly the edge highlight shows: 1 is as bright and wide as a real rounded "
+                    "edge of this radius, 0 turns it off, more exaggerates it")
     radius: bpy.props.FloatProperty(
         update=_tag, name="Radius", default=0.01, min=0.0, soft_max=0.1, unit='LENGTH', precision=4,
-        description="Radius of the rounding in scene units")
+        description="Bevel radius in the object's local units, scaled with the object, like the Bevel "
+                    "modifier's Amount")
     tint: bpy.props.FloatVectorProperty(
         update=_tag, name="Highlight Tint", subtype='COLOR', size=3, default=(1.0, 1.0, 1.0), min=0.0, soft_max=1.0,
         description="Multiplies the specular part of the edge highlight")
@@ -58,13 +56,12 @@ class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
         update=_tag, name="Shading", default='PHONG',
         items=[('PHONG', "Blinn-Phong", "Lit by the scene's lights from the material's colour and roughness"),
                ('RAMP', "Toon Ramp", "Cel shading: the lighting N.L looked up in a colour ramp"),
-               ('XTOON', "X-Toon", "The lighting N.L and depth or orientation looked up in a 2-D image")])
-    ramp: bpy.props.CollectionProperty(type=EdgeLightRampStop)
-    ramp_index: bpy.props.IntProperty(name="Active Stop", default=0, min=0)
-    ramp_interpolation: bpy.props.EnumProperty(
-        update=_tag, name="Bands", default='CONSTANT',
-        items=[('CONSTANT', "Stepped", "Each stop's colour holds until the next stop: hard bands"),
-               ('LINEAR', "Smooth", "Colours blend linearly between stops")])
+               ('XTOON', "X-Toon", "The lighting N.L and depth or orientation looked up in a 2-D image")],
+        description="How the surface is shaded: lit, in toon bands from a colour ramp, or from an X-Toon image")
+    shade_ramp: bpy.props.PointerProperty(
+        update=_tag, type=bpy.types.NodeTree, name="Shade Ramp", options={'HIDDEN'},
+        description="The node group holding this material's toon colour ramp (see color_ramp.py); "
+                    "none: two bands of the base colour")
     xtoon_image: bpy.props.PointerProperty(
         update=_tag, type=bpy.types.Image, name="X-Toon Image",
         description="x: lighting N.L (left dark, right lit); y: the detail axis below (bottom near). "
@@ -72,12 +69,14 @@ class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
     xtoon_axis: bpy.props.EnumProperty(
         update=_tag, name="Y Axis", default='DEPTH',
         items=[('DEPTH', "Depth", "y runs from the near distance (bottom) to the far distance (top)"),
-               ('ORIENTATION', "Orientation", "y runs from facing the eye (bottom) to the outline (top)")])
+               ('ORIENTATION', "Orientation", "y runs from facing the eye (bottom) to the outline (top)")],
+        description="What the X-Toon image's vertical axis follows: distance from the camera or turning away from it")
     xtoon_near: bpy.props.FloatProperty(
         update=_tag, name="Near", default=1.0, min=0.0, unit='LENGTH', description="Distance of the image's bottom row")
     xtoon_far: bpy.props.FloatProperty(
         update=_tag, name="Far", default=20.0, min=0.0, unit='LENGTH', description="Distance of the image's top row")
-    settings_version: bpy.props.IntProperty(default=SETTINGS_VERSION, options={'HIDDEN'})
+    settings_version: bpy.props.IntProperty(
+        default=SETTINGS_VERSION, options={'HIDDEN'}, description="Settings layout these values were saved with")
 
 
 # Line types: (property suffix, label, default colour, default enabled, description).
@@ -95,17 +94,30 @@ def _line_style(name, enabled):
     """A line type's style. One class per type, because a PointerProperty's group cannot carry
     per-pointer defaults and silhouettes, creases and borders start enabled."""
     annotations = {
-        "enabled": bpy.props.BoolProperty(update=_tag, name="Enabled", default=enabled),
+        "enabled": bpy.props.BoolProperty(update=_tag, name="Enabled", default=enabled, description="Draw these lines"),
         "color": bpy.props.FloatVectorProperty(
-            update=_tag, name="Color", subtype='COLOR', size=3, default=(0.0, 0.0, 0.0), min=0.0, soft_max=1.0),
-        "opacity": bpy.props.FloatProperty(update=_tag, name="Opacity", default=1.0, min=0.0, max=1.0, subtype='FACTOR'),
+            update=_tag, name="Color", subtype='COLOR', size=3, default=(0.0, 0.0, 0.0), min=0.0, soft_max=1.0,
+            description="Ink colour of these lines"),
+        "opacity": bpy.props.FloatProperty(update=_tag, name="Opacity", default=1.0, min=0.0, max=1.0, subtype='FACTOR',
+                                           description="How opaque these lines are over the image"),
+        # Stored in the unit `unit` names; the UI edits it through width_px or width_scene,
+        # which carry the unit (px, or the scene's length unit).
         "width": bpy.props.FloatProperty(
             update=_tag, name="Width", default=2.0, min=0.0, soft_max=20.0,
-            description="Line width in pixels, or in scene units (see Unit)"),
+            description="Line width, in pixels or in scene units (see Unit)"),
+        "width_px": bpy.props.FloatProperty(
+            name="Width", subtype='PIXEL', min=0.0, soft_max=20.0, get=line_units.get_width, set=line_units.set_width,
+            description="Line width in pixels of the rendered image"),
+        "width_scene": bpy.props.FloatProperty(
+            name="Width", unit='LENGTH', min=0.0, soft_max=0.1, precision=4,
+            get=line_units.get_width, set=line_units.set_width,
+            description="Line width in scene units: lines thin with distance, down to the pixel floor"),
         "unit": bpy.props.EnumProperty(
-            update=_tag, name="Unit", default='PIXELS',
+            update=_tag, name="Unit", default='PIXELS', get=line_units.get_unit, set=line_units.set_unit,
             items=[('PIXELS', "Pixels", "The same width at any distance"),
-                   ('SCENE', "Scene Units", "A width in the scene that thins with distance, down to the pixel floor")]),
+                   ('SCENE', "Scene Units", "A width in the scene that thins with distance, down to the pixel floor")],
+            description="Whether Width is in pixels or in scene units; switching converts the width "
+                        "so the lines keep their size in the camera view"),
         "min_pixels": bpy.props.FloatProperty(
             update=_tag, name="Pixel Floor", default=1.0, min=0.0, soft_max=4.0,
             description="Scene-unit lines never get thinner than this many pixels"),
@@ -128,12 +140,22 @@ class EdgeLightSceneSettings(bpy.types.PropertyGroup):
         description="Jittered samples accumulated in the viewport")
     highlights: bpy.props.BoolProperty(
         update=_tag, name="Edge Highlights", default=True, description="Draw the rounded-edge highlight pass")
+    show_debug_stats: bpy.props.BoolProperty(
+        update=_tag, name="Developer Counters", default=False,
+        description="Show the viewport's cache hits, native calls and uploads in the status bar")
     # Ink lines.
     use_lines: bpy.props.BoolProperty(update=_tag, name="Lines", default=False, description="Draw ink lines on feature edges")
     crease_angle: bpy.props.FloatProperty(
         update=_tag, name="Crease Angle", default=0.7853982, min=0.0, max=3.14159265, subtype='ANGLE',
         description="Edges whose face normals differ by more than this are creases (Auto Smooth convention; "
                     "Freestyle's crease angle is 180 degrees minus this)")
+    # The same setting in Freestyle's and Line Art's convention; stores nothing of its own.
+    crease_angle_faces: bpy.props.FloatProperty(
+        name="Crease Angle", min=0.0, max=math.pi, subtype='ANGLE',
+        get=lambda self: math.pi - self.crease_angle,
+        set=lambda self, value: setattr(self, "crease_angle", math.pi - value),
+        description="Edges whose faces meet at less than this angle are creases (measured between the faces, "
+                    "180 degrees is flat: Freestyle's and Line Art's convention)")
     marks: bpy.props.EnumProperty(
         update=_tag, name="Marks", options={'ENUM_FLAG'}, default={'FREESTYLE'},
         items=[('FREESTYLE', "Freestyle", "Edges marked for Freestyle"),
@@ -143,8 +165,11 @@ class EdgeLightSceneSettings(bpy.types.PropertyGroup):
     hidden_lines: bpy.props.EnumProperty(
         update=_tag, name="Hidden Lines", default='OFF',
         items=[('OFF', "Off", "Lines behind surfaces are not drawn"),
-               ('DIMMED', "Dimmed", "Lines behind surfaces are drawn at the hidden opacity")])
-    hidden_opacity: bpy.props.FloatProperty(update=_tag, name="Hidden Opacity", default=0.25, min=0.0, max=1.0, subtype='FACTOR')
+               ('DIMMED', "Dimmed", "Lines behind surfaces are drawn at the hidden opacity")],
+        description="Whether lines behind surfaces are left out or drawn dimmed")
+    hidden_opacity: bpy.props.FloatProperty(
+        update=_tag, name="Hidden Opacity", default=0.25, min=0.0, max=1.0, subtype='FACTOR',
+        description="Opacity of lines behind surfaces, as a fraction of their own")
     debug: bpy.props.EnumProperty(
         update=_tag, name="Debug", options={'ENUM_FLAG'}, default=set(),
         items=[('EDGE_TYPES', "Edge Types", "Every line type in its own colour: silhouettes red, creases and borders "
@@ -152,7 +177,8 @@ class EdgeLightSceneSettings(bpy.types.PropertyGroup):
                ('WHITEOUT', "Whiteout", "Unlit white surfaces and no highlights: lines only"),
                ('WIRE', "Wire", "The mesh's edges as thin blue lines")],
         description="Views for checking what EdgeLight finds")
-    settings_version: bpy.props.IntProperty(default=SETTINGS_VERSION, options={'HIDDEN'})
+    settings_version: bpy.props.IntProperty(
+        default=SETTINGS_VERSION, options={'HIDDEN'}, description="Settings layout these values were saved with")
 
 
 for (_name, _label, _on, _doc), _style in zip(LINE_TYPES, LINE_STYLES):
@@ -160,7 +186,7 @@ for (_name, _label, _on, _doc), _style in zip(LINE_TYPES, LINE_STYLES):
         type=_style, name=_label, description=_doc)
 
 
-CLASSES = (EdgeLightRampStop, EdgeLightMaterialSettings, *LINE_STYLES, EdgeLightSceneSettings)
+CLASSES = (EdgeLightMaterialSettings, *LINE_STYLES, EdgeLightSceneSettings)
 
 
 def register():

@@ -181,8 +181,12 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     out = MeshExtract(name, positions[tri_verts.reshape(-1)], np.ascontiguousarray(corner_nor, np.float32),
                       slot_triangles, shading, info=info)
     # The classification, kept so a material change can re-choose edges without a native call.
+    # The id the surface pass writes for each triangle (passes/frame.py): its batch's first id
+    # plus its place in the batch, since the slots' batches are drawn in this order.
+    surface_id = np.empty(tri_count, np.uint32)
+    surface_id[order] = np.arange(1, tri_count + 1, dtype=np.uint32)
     out.edge_data = EdgeData(m.edge_flags(), m.edge_angles(), m.edge_normals(), edges, positions,
-                             *_first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel)
+                             *_first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id)
     out.edges = choose_edges(out.edge_data, shading)
     out.native = m
     out.update_lines(line_settings)
@@ -208,6 +212,7 @@ class EdgeData:
     tri_slot: np.ndarray
     sharp: np.ndarray
     bevel: np.ndarray
+    surface_id: np.ndarray = None      # per triangle: 1 + its place in the slot-ordered surface batches
 
 
 def rechoose_edges(extract):

@@ -2,7 +2,8 @@
 EdgeLight are shown for it too."""
 import bpy
 
-from . import compat
+from . import color_ramp, compat
+from . import ui_light
 from .properties import LINE_TYPES
 
 
@@ -35,8 +36,10 @@ class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
         layout.prop(s, "radius")
         layout.prop(s, "K")
         layout.prop(s, "tint")
-        row = layout.row(heading="Edges")
-        row.prop(s, "selection")
+        # One toggle per row: a row of three cuts their labels at the default panel width.
+        col = layout.column(heading="Edges", align=True)
+        for rule in ('ANGLE', 'SHARP', 'BEVEL'):
+            col.prop_enum(s, "selection", rule)
         sub = layout.column()
         sub.active = 'ANGLE' in s.selection
         sub.prop(s, "angle")
@@ -46,55 +49,35 @@ class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
         sub.prop(s, "shininess")
 
 
-class EDGELIGHT_UL_ramp(bpy.types.UIList):
-    def draw_item(self, context, layout, data, item, icon, active_data, active_propname, index):
-        row = layout.row(align=True)
-        row.prop(item, "color", text="")
-        row.prop(item, "position", text="")
-
-
-class EDGELIGHT_OT_ramp_add(bpy.types.Operator):
-    """Add a stop to the material's toon ramp (the first one adds the two default bands)"""
-    bl_idname = "edgelight.ramp_add"
-    bl_label = "Add Ramp Stop"
+class EDGELIGHT_OT_ramp_new(bpy.types.Operator):
+    """Give the material a toon colour ramp, starting from two bands of its base colour"""
+    bl_idname = "edgelight.ramp_new"
+    bl_label = "New Ramp"
     bl_options = {'REGISTER', 'UNDO'}
 
     @classmethod
     def poll(cls, context):
-        return context.material is not None
+        return context.material is not None and context.material.edgelight.shade_ramp is None
 
     def execute(self, context):
-        from .materials import default_ramp, shading_of
+        from .materials import base_color_of, default_ramp
         mat = context.material
-        s = mat.edgelight
-        if len(s.ramp) == 0:
-            for position, color in default_ramp(shading_of(mat).base_color):
-                stop = s.ramp.add()
-                stop.position, stop.color = position, color
-        else:
-            last = s.ramp[len(s.ramp) - 1]
-            stop = s.ramp.add()
-            stop.position, stop.color = min(1.0, last.position + 0.25), last.color
-        s.ramp_index = len(s.ramp) - 1
-        mat.update_tag()
+        mat.edgelight.shade_ramp = color_ramp.new_ramp(default_ramp(base_color_of(mat)))
         return {'FINISHED'}
 
 
-class EDGELIGHT_OT_ramp_remove(bpy.types.Operator):
-    """Remove the active stop of the material's toon ramp"""
-    bl_idname = "edgelight.ramp_remove"
-    bl_label = "Remove Ramp Stop"
+class EDGELIGHT_OT_ramp_single_user(bpy.types.Operator):
+    """Give this material a copy of the ramp it shares with other materials, to edit it alone"""
+    bl_idname = "edgelight.ramp_single_user"
+    bl_label = "Make Single User"
     bl_options = {'REGISTER', 'UNDO'}
 
     @classmethod
     def poll(cls, context):
-        return context.material is not None and len(context.material.edgelight.ramp) > 0
+        return context.material is not None and context.material.edgelight.shade_ramp is not None
 
     def execute(self, context):
-        s = context.material.edgelight
-        s.ramp.remove(min(s.ramp_index, len(s.ramp) - 1))
-        s.ramp_index = max(0, min(s.ramp_index, len(s.ramp) - 1))
-        context.material.update_tag()
+        color_ramp.copy_ramp(context.material.edgelight)
         return {'FINISHED'}
 
 
@@ -113,14 +96,18 @@ class EDGELIGHT_PT_material_toon(EdgeLightPanel, bpy.types.Panel):
         layout.use_property_split = True
         layout.prop(s, "shading")
         if s.shading == 'RAMP':
-            layout.prop(s, "ramp_interpolation")
-            row = layout.row()
-            row.template_list("EDGELIGHT_UL_ramp", "", s, "ramp", s, "ramp_index", rows=3)
-            col = row.column(align=True)
-            col.operator("edgelight.ramp_add", icon='ADD', text="")
-            col.operator("edgelight.ramp_remove", icon='REMOVE', text="")
-            if len(s.ramp) == 0:
-                layout.label(text="No stops: two bands of the base colour are used", icon='INFO')
+            ramp = color_ramp.ramp_of(s)
+            if ramp is None:
+                layout.label(text="Two bands of the base colour", icon='INFO')
+                layout.operator("edgelight.ramp_new", icon='ADD')
+            else:
+                # x: the lighting N.L, 0 unlit to 1 facing the light. Constant: hard bands.
+                layout.template_color_ramp(s.shade_ramp.nodes[color_ramp.NODE], "color_ramp", expand=True)
+                users = s.shade_ramp.users
+                if users > 1:
+                    row = layout.row()
+                    row.label(text=f"Shared by {users} materials", icon='LINKED')
+                    row.operator("edgelight.ramp_single_user", text="Make Single User")
         elif s.shading == 'XTOON':
             layout.template_ID(s, "xtoon_image", new="image.new", open="image.open")
             layout.prop(s, "xtoon_axis")
@@ -137,8 +124,9 @@ class EDGELIGHT_PT_render(EdgeLightPanel, bpy.types.Panel):
         s = context.scene.edgelight
         layout = self.layout
         layout.use_property_split = True
-        layout.prop(s, "samples")
-        layout.prop(s, "viewport_samples")
+        col = layout.column(align=True)
+        col.prop(s, "samples", text="Samples")
+        col.prop(s, "viewport_samples", text="Viewport")
         layout.prop(s, "highlights")
         layout.prop(context.scene.render, "film_transparent")
 
@@ -155,8 +143,11 @@ class EDGELIGHT_PT_lines(EdgeLightPanel, bpy.types.Panel):
         layout = self.layout
         layout.use_property_split = True
         layout.active = s.use_lines
-        layout.prop(s, "crease_angle")
-        layout.prop(s, "marks")
+        layout.prop(s, "crease_angle_faces")  # Freestyle's convention, the one artists know
+        layout.prop(s, "crease_angle", text="Normals Differ By")
+        col = layout.column(heading="Marks", align=True)
+        for mark in ('FREESTYLE', 'SHARP', 'SEAM'):
+            col.prop_enum(s, "marks", mark)
         layout.prop(s, "hidden_lines")
         sub = layout.column()
         sub.active = s.hidden_lines == 'DIMMED'
@@ -177,7 +168,7 @@ def _line_type_panel(name, label):
         layout.prop(st, "color")
         layout.prop(st, "opacity")
         layout.prop(st, "unit")
-        layout.prop(st, "width")
+        layout.prop(st, "width_scene" if st.unit == 'SCENE' else "width_px")
         if st.unit == 'SCENE':
             layout.prop(st, "min_pixels")
         layout.prop(st, "taper")
@@ -194,11 +185,12 @@ class EDGELIGHT_PT_debug(EdgeLightPanel, bpy.types.Panel):
 
     def draw(self, context):
         self.layout.prop(context.scene.edgelight, "debug")
+        self.layout.prop(context.scene.edgelight, "show_debug_stats")
 
 
 LINE_PANELS = tuple(_line_type_panel(name, label) for name, label, _on, _doc in LINE_TYPES)
-CLASSES = (EDGELIGHT_UL_ramp, EDGELIGHT_OT_ramp_add, EDGELIGHT_OT_ramp_remove, EDGELIGHT_PT_material,
-           EDGELIGHT_PT_material_toon, EDGELIGHT_PT_render, EDGELIGHT_PT_lines, *LINE_PANELS, EDGELIGHT_PT_debug)
+CLASSES = (EDGELIGHT_OT_ramp_new, EDGELIGHT_OT_ramp_single_user, EDGELIGHT_PT_material,
+           EDGELIGHT_PT_material_toon, ui_light.EDGELIGHT_PT_light, EDGELIGHT_PT_render, EDGELIGHT_PT_lines, *LINE_PANELS, EDGELIGHT_PT_debug)
 _patched = []
 
 

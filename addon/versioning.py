@@ -11,6 +11,7 @@ properties of the group: `group.get(name)` reads them (group-level access works 
 import bpy
 from bpy.app.handlers import persistent
 
+from . import color_ramp, materials
 from .properties import SETTINGS_VERSION
 
 STAMP = "settings_version"
@@ -23,9 +24,26 @@ def _material_1_to_2(group):
         del group["enabled"]
 
 
+def _material_2_to_3(group):
+    """Layout 3 keeps the toon ramp in a colour ramp (color_ramp.py) instead of a list of stops
+    (`ramp`: groups of `position` and `color`, unset values at their defaults) with
+    `ramp_interpolation` (0 stepped, 1 smooth)."""
+    keys = group.keys()
+    interpolation = ('CONSTANT', 'LINEAR')[int(group.get("ramp_interpolation", 0))]
+    stops = [(float(st.get("position", 0.0)), tuple(st.get("color", (0.8, 0.8, 0.8)))) for st in group.get("ramp") or ()]
+    if not stops and interpolation == 'LINEAR' and "ramp_interpolation" in keys:
+        # An empty list drew the base colour's two bands, smooth here: keep that look.
+        stops = list(materials.default_ramp(materials.base_color_of(group.id_data)))
+    if stops and group.shade_ramp is None:
+        group.shade_ramp = color_ramp.new_ramp(stops, interpolation)
+    for key in ("ramp", "ramp_index", "ramp_interpolation"):
+        if key in keys:
+            del group[key]
+
+
 # kind -> {layout: step from that layout to the next}
 STEPS = {
-    "material": {1: _material_1_to_2},
+    "material": {1: _material_1_to_2, 2: _material_2_to_3},
     "scene": {},
 }
 

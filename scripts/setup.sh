@@ -12,8 +12,11 @@ packages=(
   libcgal-demo          # classic meshes (cow, fandisk, bunny, armadillo) in data.tar.gz
   blender python3-numpy # Debian's Blender 3.4 (system Python 3.11) for the add-on
   python3-matplotlib    # the ground-truth benchmark's Pareto plot (bench/plot_ground_truth.py)
+  python3-pil           # the farm tests read rendered PNGs (tests/farm)
+  npm                   # acorn, which parses the Flamenco job type in the farm tests
   python3-venv          # venvs for Blender 4.2 / 4.5 / 5.x as Python modules (setup_bpy.sh)
   xvfb                  # the UI under xvfb-run for viewport tests
+  xdotool               # presses Esc in the render window in the viewport session
   clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the C API fuzz test (scripts/fuzz.sh)
 )
 

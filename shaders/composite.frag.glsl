@@ -13,4 +13,7 @@ void main()
   rgb = ln.a * ln.rgb + (1.0 - ln.a) * rgb;
   a = ln.a + (1.0 - ln.a) * a;
   out_color = vec4(rgb + (1.0 - a) * background.w * background.rgb, mix(a, 1.0, background.w)) * weight;
+#ifdef EL_SURFACE_PASS
+  out_surface = surf * weight; /* the Surface render pass: the sample mean of the surface alone */
+#endif
 }

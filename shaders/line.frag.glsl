@@ -1,6 +1,7 @@
 /* Ink line pass: a round-capped stroke around the segment, box-filtered across its width, so
  * strokes that share an end overlap at the join with no gap at any angle. Visibility is decided
- * on the centre line (so the whole width of a stroke agrees) against the surface pass's depth.
+ * on the centre line (so the whole width of a stroke agrees) against the surface pass's ids and
+ * depth.
  * The output depth is 1 - alpha: with a LESS depth test each pixel keeps its most opaque stroke
  * instead of stacking the overlapping caps of a chain, which would darken its joins. */
 
@@ -27,28 +28,31 @@ void main()
   /* View depth of the centre point (1/z is affine in screen space under perspective). */
   bool persp = frame.eye.w > 0.5;
   float z = persp ? 1.0 / mix(1.0 / line_depth.x, 1.0 / line_depth.y, t) : mix(line_depth.x, line_depth.y, t);
-  /* The farthest surface in the 3x3 pixels around the centre point: a line on an outline sees
-   * the background (or what lies behind) on its outer side and stays visible. */
+  /* Visibility from the surface pass's ids (docs/lines.md, "Visibility"): visible where one of
+   * the segment's own faces (line_faces, of this instance: line_vis.z) shows in the 3x3 pixels
+   * around the centre point, or else where what shows is no nearer than the line within a tight
+   * tolerance. For a line that can lie on an outline (line_vis.w: silhouettes, borders,
+   * contours) what shows is the farthest of the 3x3 pixels, so the background or what lies
+   * behind on its outer side keeps it; for any other line it is the centre pixel, so a crease
+   * near an outline is still hidden by what covers it. Unlike a depth bias that follows the
+   * faces' slope, the tolerance is half a pixel's footprint, so a wall thicker than that hides
+   * what lies behind it at any angle. */
   ivec2 q = ivec2(floor(c));
   ivec2 size = textureSize(surface_depth, 0) - 1;
   float inv_far = 3.0e38;
+  bool own = false;
   for (int dy = -1; dy <= 1; dy++) {
     for (int dx = -1; dx <= 1; dx++) {
-      inv_far = min(inv_far, texelFetch(surface_depth, clamp(q + ivec2(dx, dy), ivec2(0), size), 0).r);
+      ivec2 at = clamp(q + ivec2(dx, dy), ivec2(0), size);
+      inv_far = min(inv_far, texelFetch(surface_depth, at, 0).r);
+      vec2 id = texelFetch(surface_id, at, 0).rg;
+      own = own || (id.x == line_vis.z && id.y > 0.0 && (id.y == line_faces.x || id.y == line_faces.y));
     }
   }
-  /* View-space bias: the faces next to the edge differ in depth from its centre line by up to
-   * 1.5 pixels times their depth slope; plus a relative part against rounding. */
-  float dz = line_depth.y - line_depth.x;
-  float u = abs(dz) > 1e-6 * abs(z) ? clamp((z - line_depth.x) / dz, 0.0, 1.0) : t;
-  vec3 X = mix(line_world_a, line_world_b, u);
+  float inv_shown = line_vis.w > 0.5 ? inv_far : texelFetch(surface_depth, clamp(q, ivec2(0), size), 0).r;
   float world_per_px = (persp ? z : 1.0) / frame.camera.x;
-  vec3 V = persp ? normalize(frame.eye.xyz - X) : -frame.view_dir.xyz;
-  float c1 = abs(dot(normalize(line_n1), V)), c2 = abs(dot(normalize(line_n2), V));
-  float cmin = max(min(c1, c2), 1.0 / 16.0);
-  float slope = sqrt(max(1.0 - cmin * cmin, 0.0)) / cmin;
-  float bias = 1.5 * world_per_px * (slope + 0.05) + line_vis.y * abs(z);
-  bool visible = inv_far <= 0.0 || z <= 1.0 / inv_far + bias;
+  float bias = 0.5 * world_per_px + line_vis.y * abs(z);
+  bool visible = own || inv_shown <= 0.0 || z <= 1.0 / inv_shown + bias;
   float alpha = cov * line_color.a * (visible ? 1.0 : line_vis.x);
   if (alpha <= 0.0) {
     discard;

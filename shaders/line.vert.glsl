@@ -48,6 +48,7 @@ void main()
   line_depth = vec2(za, zb);
   line_world_a = mix(w0, w1, t0);
   line_world_b = mix(w0, w1, t1);
+  line_faces = faces;
   line_n1 = el_transform_normal(model, n1);
   line_n2 = el_transform_normal(model, n2);
 

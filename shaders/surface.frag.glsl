@@ -9,6 +9,16 @@
 void main()
 {
   out_depth = 1.0 / max(view_depth, 1e-30); /* 0 where nothing was drawn: infinitely far */
+#ifdef EL_SURFACE_IDS
+  /* Which instance and face covers the pixel, for the line pass's visibility (docs/lines.md):
+   * surface_ids.y is the id of the batch's first triangle; 0 where nothing was drawn. */
+  out_id = vec2(surface_ids.x, surface_ids.y + float(gl_PrimitiveID));
+#endif
+#ifdef EL_NORMAL_PASS
+  /* The Normal render pass: world space, facing the camera, as Cycles writes it. Only the
+   * program variant built for a render that asks for the pass has this output. */
+  out_normal = vec4(gl_FrontFacing ? normalize(world_nor) : -normalize(world_nor), 1.0);
+#endif
   const int mode = EL_SURFACE_MODE;
   if (mode == 3) {
     out_color = vec4(1.0, 1.0, 1.0, base_color.a); /* a transparent material stays transparent */

@@ -115,10 +115,16 @@ class Targets:
         self.result = compat.texture((width, height), 'RGBA32F')
         self.lines = compat.texture((width, height), 'RGBA32F')
         self.line_depth = compat.texture((width, height), 'DEPTH_COMPONENT32F')
+        # Which instance and face covers each pixel (first sample, when lines are drawn).
+        self.surface_id = compat.texture((width, height), 'RG32F')
         self.normal = compat.texture((width, height), 'RGBA32F') if normal else None  # world normal; 0 = empty
         self.surface_sum = compat.texture((width, height), 'RGBA32F') if surface_sum else None  # sample mean
         extra = (self.normal,) if normal else ()
         self.surface_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.surface_color, self.surface_depth, *extra))
+        # The same with the ids after the other outputs (program outputs follow their defines'
+        # sorted order: EL_NORMAL_PASS, then EL_SURFACE_IDS).
+        self.surface_ids_fb = gpu.types.GPUFrameBuffer(
+            depth_slot=self.depth, color_slots=(self.surface_color, self.surface_depth, *extra, self.surface_id))
         # The surface pass's depth: the edge pass depth-tests against it (read only).
         self.highlight_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.highlight,))
         extra = (self.surface_sum,) if surface_sum else ()
@@ -168,28 +174,45 @@ def _toon_uniforms(shader, s, mode):
         shader.uniform_sampler("toon_map", toon.map_texture(t, s.base_color))
 
 
-def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False):
+def slot_first_ids(extract):
+    """slot -> the surface id of its batch's first triangle (scene_sync: ids follow slot order)."""
+    out, first = {}, 1
+    for slot, tris in extract.slot_triangles.items():
+        out[slot] = first
+        first += len(tris)
+    return out
+
+
+def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False):
     """One program per shading mode in use (EL_SURFACE_MODE is fixed when it is built: a uniform
-    branch would make every fragment pay for every mode on llvmpipe)."""
+    branch would make every fragment pay for every mode on llvmpipe). With `ids`, the variant
+    that also writes which instance and face covers each pixel (the line pass's visibility,
+    docs/lines.md)."""
     draws = {}
-    for inst in scene.instances:
+    for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
+        first = slot_first_ids(gm.extract) if ids else {}
         for slot, batch in gm.surface.items():
             s = gm.extract.slot_shading[slot]
-            draws.setdefault(_surface_mode(s, whiteout), []).append((inst.matrix, s, batch))
-    with targets.surface_fb.bind():
-        targets.surface_fb.clear(color=(0.0, 0.0, 0.0, 0.0), depth=1.0)
+            draws.setdefault(_surface_mode(s, whiteout), []).append(
+                (inst.matrix, s, batch, (float(index + 1), float(first.get(slot, 0)))))
+    fb = targets.surface_ids_fb if ids else targets.surface_fb
+    with fb.bind():
+        fb.clear(color=(0.0, 0.0, 0.0, 0.0), depth=1.0)
         gpu.state.depth_test_set('LESS_EQUAL')
         gpu.state.depth_mask_set(True)
         gpu.state.blend_set('NONE')
         gpu.state.face_culling_set('NONE')
         normal = {"EL_NORMAL_PASS": 1} if targets.normal is not None else {}
+        with_ids = {"EL_SURFACE_IDS": 1} if ids else {}
         for mode, items in sorted(draws.items()):
-            shader = shader_lib.get("surface", {"EL_SURFACE_MODE": mode, **normal})
+            shader = shader_lib.get("surface", {"EL_SURFACE_MODE": mode, **normal, **with_ids})
             shader.bind()
             shader.uniform_block("frame", ubo)
-            for matrix, s, batch in items:
+            for matrix, s, batch, surface_ids in items:
                 shader.uniform_float("model", _mat(matrix))
+                if ids:
+                    shader.uniform_float("surface_ids", surface_ids)
                 _shading_uniforms(shader, s, specular=mode == 0)
                 _toon_uniforms(shader, s, mode)
                 batch.draw(shader)
@@ -257,14 +280,14 @@ def read(texture, width, height):
 
 
 def line_instances(scene, gpu_meshes, view_batches):
-    """[(matrix, {type: (batch, count)})]: each instance's static line batches (shared by the
+    """[(matrix, {type: (batch, count)}, instance id)]: each instance's static line batches (shared by the
     instances of a mesh) and its own view-dependent ones (view_batches[i] for instance i)."""
     out = []
     for i, inst in enumerate(scene.instances):
         batches_of = dict(gpu_meshes[id(inst.mesh)].lines)
         if view_batches and i < len(view_batches) and view_batches[i]:
             batches_of.update(view_batches[i])
-        out.append((inst.matrix, batches_of))
+        out.append((inst.matrix, batches_of, i + 1))  # i + 1: the instance's surface id
     return out
 
 
@@ -307,7 +330,9 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         data = frame_data(camera, projection, scene)
         ubo = gpu.types.GPUUniformBuf(gpu.types.Buffer('FLOAT', data.size, data))
         whiteout = settings.lines is not None and settings.lines.whiteout
-        draw_surface(targets, scene, gpu_meshes, ubo, whiteout)
+        # The first sample's surface also writes ids where lines are drawn: the line pass runs
+        # on it alone.
+        draw_surface(targets, scene, gpu_meshes, ubo, whiteout, ids=s == 0 and settings.lines is not None)
         if s == 0 and first_sample:
             first_sample()
         # The edge and line passes run once, on the unjittered first sample: their coverage is

@@ -10,6 +10,8 @@ _CORNERS = np.array([[0, -1], [0, 1], [1, -1], [1, 1]], dtype=np.float32)
 _TRIS = np.array([0, 1, 3, 0, 3, 2], dtype=np.int64)
 # Relative part of the depth bias (line.frag.glsl), against float rounding of depths.
 REL_BIAS = 1e-4
+# Line types that can lie on an outline: the background beside them does not hide them.
+OUTLINE_TYPES = frozenset({"silhouette", "border", "contour", "wire"})
 
 
 def line_batch(seg, start=0, stop=None):
@@ -19,7 +21,8 @@ def line_batch(seg, start=0, stop=None):
     if n <= 0:
         return None
     fmt = gpu.types.GPUVertFormat()
-    attrs = {"p0": seg.p0, "p1": seg.p1, "n1": seg.n1, "n2": seg.n2, "taper": seg.taper}
+    faces = seg.faces if seg.faces is not None else np.zeros((len(seg), 2), np.float32)
+    attrs = {"p0": seg.p0, "p1": seg.p1, "n1": seg.n1, "n2": seg.n2, "taper": seg.taper, "faces": faces}
     for name, a in attrs.items():
         fmt.attr_add(id=name, comp_type='F32', len=a.shape[1], fetch_mode='FLOAT')
     fmt.attr_add(id="corner", comp_type='F32', len=2, fetch_mode='FLOAT')
@@ -49,8 +52,8 @@ def _mat(m):
 
 
 def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None):
-    """instances: [(model matrix, {type: ([batch, ...], count)})]; types drawn in settings'
-    order. checkpoint(), when given, runs after each batch; True stops the pass (a cancel):
+    """instances: [(model matrix, {type: ([batch, ...], count)}, surface id of the instance)];
+    types drawn in settings' order. checkpoint(), when given, runs after each batch; True stops the pass (a cancel):
     returns whether it stopped."""
     if settings is None and targets.lines_empty:
         return False  # still clear from the last frame: no full-screen clear per frame without lines
@@ -67,15 +70,17 @@ def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None):
         shader.bind()
         shader.uniform_block("frame", ubo)
         shader.uniform_sampler("surface_depth", targets.surface_depth)
-        shader.uniform_float("line_vis", (settings.hidden_opacity, REL_BIAS, 0.0, 0.0))
+        shader.uniform_sampler("surface_id", targets.surface_id)
         for kind, style in settings.styles:
             shader.uniform_float("line_color", (*style.color, style.opacity))
             shader.uniform_float("line_style", (style.width, 1.0 if style.scene_units else 0.0, style.min_pixels, style.taper))
-            for matrix, batches in instances:
+            for matrix, batches, instance_id in instances:
                 entry = batches.get(kind)
                 if entry is None:
                     continue
                 shader.uniform_float("model", _mat(matrix))
+                shader.uniform_float("line_vis", (settings.hidden_opacity, REL_BIAS, float(instance_id),
+                                                  1.0 if kind in OUTLINE_TYPES else 0.0))
                 stats.lines_drawn += entry[1]
                 for batch in entry[0]:
                     batch.draw(shader)

@@ -62,7 +62,11 @@ def _build(name, d, defines):
     info.vertex_out(iface)
     for slot, (type_name, var) in enumerate(d["samplers"]):
         info.sampler(slot, type_name, var)
-    for slot, (type_name, var) in enumerate(d["fragment_out"]):
+    outs = list(d["fragment_out"])
+    for define, extra in sorted(d.get("fragment_out_if", {}).items()):
+        if define in defines:  # an output only a variant has (a render pass asked for)
+            outs += extra
+    for slot, (type_name, var) in enumerate(outs):
         info.fragment_out(slot, type_name, var)
     info.vertex_source("\n".join(_read(f) for f in d["vertex"]))
     info.fragment_source("\n".join(_read(f) for f in d["fragment"]))

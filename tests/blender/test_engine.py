@@ -23,10 +23,9 @@ class Panels(unittest.TestCase):
         compat = helpers.addon().compat
         engines = [i.identifier for i in bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items]
         self.assertIn(compat.eevee_engine_id(), engines)
-        for name in ("DATA_PT_light", "DATA_PT_lens", "RENDER_PT_format", "EEVEE_WORLD_PT_surface"):
+        for name in ("DATA_PT_context_light", "DATA_PT_lens", "RENDER_PT_format", "EEVEE_WORLD_PT_surface"):
             self.assertIn("EDGELIGHT", getattr(bpy.types, name).COMPAT_ENGINES, name)
-        self.assertNotIn("EDGELIGHT", bpy.types.EEVEE_MATERIAL_PT_surface.COMPAT_ENGINES,
-                         "EdgeLight's own material panel replaces it")
+        # Which material, light and world panels show (and which don't): test_panels.py.
 
 
 class RendersEverySample(unittest.TestCase):

@@ -258,8 +258,9 @@ class Taper(unittest.TestCase):
 class ScaleAndDebug(unittest.TestCase):
     def test_scene_unit_width_thins_with_distance_down_to_the_floor(self):
         scene = helpers.empty_scene(400, 400)
-        s = helpers.only_lines(scene, border=0.05)
-        s.line_border.unit = 'SCENE'
+        s = helpers.only_lines(scene, border=2.0)
+        s.line_border.unit = 'SCENE'  # converts the width (no camera yet: kept); set it after
+        s.line_border.width = 0.05
         s.line_border.min_pixels = 2.0
         bpy.ops.mesh.primitive_plane_add(size=2.0)
         cam = helpers.add_camera((0.0, 0.0, 5.0))

@@ -204,13 +204,13 @@ class SettingsSurviveSaveAndReload(unittest.TestCase):
         helpers.open_sample("cube")
         sc = bpy.context.scene.edgelight
         sc.use_lines, sc.crease_angle, sc.marks, sc.hidden_lines, sc.debug = True, 0.9, {'SEAM'}, 'DIMMED', {'WIRE'}
-        sc.line_contour.enabled, sc.line_contour.width, sc.line_contour.unit, sc.line_contour.taper = True, 0.02, 'SCENE', 0.25
+        # The unit first: switching it converts the width.
+        sc.line_contour.enabled, sc.line_contour.unit, sc.line_contour.width, sc.line_contour.taper = True, 'SCENE', 0.02, 0.25
         sc.line_silhouette.color = (0.1, 0.2, 0.3)
         m = bpy.data.materials["Cube"].edgelight
-        m.shading, m.ramp_interpolation, m.xtoon_axis, m.xtoon_far = 'RAMP', 'LINEAR', 'ORIENTATION', 33.0
-        for pos in (0.0, 0.4, 0.8):
-            stop = m.ramp.add()
-            stop.position, stop.color = pos, (pos, 0.5, 1.0 - pos)
+        m.shading, m.xtoon_axis, m.xtoon_far = 'RAMP', 'ORIENTATION', 33.0
+        color_ramp = helpers.addon().color_ramp
+        m.shade_ramp = color_ramp.new_ramp([(pos, (pos, 0.5, 1.0 - pos)) for pos in (0.0, 0.4, 0.8)], 'LINEAR')
         path = os.path.join(tempfile.mkdtemp(), "lines.blend")
         bpy.ops.wm.save_as_mainfile(filepath=path)
         bpy.ops.wm.open_mainfile(filepath=path)
@@ -224,8 +224,10 @@ class SettingsSurviveSaveAndReload(unittest.TestCase):
         self.assertAlmostEqual(c.taper, 0.25, places=6)
         self.assertEqual(tuple(round(v, 6) for v in sc.line_silhouette.color), (0.1, 0.2, 0.3))
         m = bpy.data.materials["Cube"].edgelight
-        self.assertEqual((m.shading, m.ramp_interpolation, m.xtoon_axis), ('RAMP', 'LINEAR', 'ORIENTATION'))
-        self.assertEqual([round(st.position, 6) for st in m.ramp], [0.0, 0.4, 0.8])
+        self.assertEqual((m.shading, m.xtoon_axis), ('RAMP', 'ORIENTATION'))
+        stops, smooth = color_ramp.stops_of(m)
+        self.assertEqual([round(p, 6) for p, _ in stops], [0.0, 0.4, 0.8])
+        self.assertTrue(smooth)
         self.assertAlmostEqual(m.xtoon_far, 33.0, places=5)
         self.assertEqual(bpy.context.scene.render.engine, "EDGELIGHT")
 

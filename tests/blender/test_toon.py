@@ -23,11 +23,7 @@ def toon_sphere(location=(0.0, 0.0, 0.0), name="Toon"):
 def set_ramp(mat, stops, smooth=False):
     s = mat.edgelight
     s.shading = 'RAMP'
-    s.ramp_interpolation = 'LINEAR' if smooth else 'CONSTANT'
-    s.ramp.clear()
-    for position, color in stops:
-        stop = s.ramp.add()
-        stop.position, stop.color = position, color
+    s.shade_ramp = helpers.addon().color_ramp.new_ramp(stops, 'LINEAR' if smooth else 'CONSTANT')
 
 
 def surface_colours(rec):

@@ -73,6 +73,49 @@ class OpensUpgraded(unittest.TestCase):
         self.assertGreater(on["stats"].edges_drawn, 0)
 
 
+LAYOUT2 = os.path.join(helpers.ROOT, "tests", "data", "settings_layout2.blend")
+# What the layout-2 file's toon materials rendered with (tests/data/make_settings_layout2.py).
+STEPPED = ((0.0, (0.05, 0.07, 0.12)), (0.3, (0.22, 0.3, 0.45)), (0.75, (0.55, 0.68, 0.85)))
+SMOOTH = ((0.1, (1.0, 0.0, 0.0)), (0.9, (0.0, 0.0, 1.0)))
+
+
+class RampStopsBecomeAColourRamp(unittest.TestCase):
+    def check(self):
+        el = helpers.addon()
+        for name, stops, interpolation in (("Stepped", STEPPED, 'CONSTANT'), ("Smooth", SMOOTH, 'LINEAR')):
+            s = bpy.data.materials[name].edgelight
+            ramp = el.color_ramp.ramp_of(s)
+            self.assertIsNotNone(ramp, name)
+            self.assertEqual(ramp.interpolation, interpolation, name)
+            toon = el.materials.toon_of(s, (0.5, 0.5, 0.5))
+            self.assertEqual(toon.smooth, interpolation == 'LINEAR')
+            self.assertEqual(len(toon.ramp), len(stops))
+            for (p, c), (want_p, want_c) in zip(toon.ramp, stops):
+                self.assertAlmostEqual(p, want_p, places=6)
+                self.assertEqual(tuple(round(v, 6) for v in c), want_c)
+            for key in ("ramp", "ramp_interpolation", "ramp_index"):
+                self.assertNotIn(key, s.keys())
+            self.assertEqual(s.get("settings_version"), current_layout())
+        none = bpy.data.materials["NoStops"]
+        self.assertIsNone(none.edgelight.shade_ramp, "an empty list stays the default two bands")
+        base = el.materials.base_color_of(none)
+        self.assertEqual(el.materials.toon_of(none.edgelight, base).ramp, el.materials.default_ramp(base))
+        self.assertIsNone(bpy.data.materials["Cube"].edgelight.shade_ramp)
+
+    def test_upgraded_on_open(self):
+        bpy.ops.wm.open_mainfile(filepath=LAYOUT2)
+        self.check()
+
+    def test_ramp_survives_save_and_reopen(self):
+        bpy.ops.wm.open_mainfile(filepath=LAYOUT2)
+        path = os.path.join(tempfile.mkdtemp(), "ramps.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        self.check()
+        groups = [g for g in bpy.data.node_groups if g.name.startswith(".EdgeLight")]
+        self.assertEqual(len(groups), 2, "one ramp per toon material, nothing else added")
+
+
 class CurrentFilesAreStamped(unittest.TestCase):
     def test_save_stamps_groups_that_store_settings(self):
         helpers.open_sample("cube")

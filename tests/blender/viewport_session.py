@@ -68,6 +68,54 @@ def to_window_pixels(points):
     return (ndc * 0.5 + 0.5) * np.array([region.width, region.height]) + np.array([region.x, region.y])
 
 
+def properties_editor():
+    window = bpy.context.window_manager.windows[0]
+    area = next(a for a in window.screen.areas if a.type == 'PROPERTIES')
+    return window, area, next(r for r in area.regions if r.type == 'WINDOW')
+
+
+def panel_polls(names):
+    """{panel: its poll in the Properties editor's context} (False for a name this Blender lacks)."""
+    window, area, region = properties_editor()
+    out = {}
+    with bpy.context.temp_override(window=window, area=area, region=region):
+        for name in names:
+            cls = getattr(bpy.types, name, None)
+            out[name] = bool(cls and cls.poll(bpy.context))
+    return out
+
+
+# tab: (object made active, panels that must show, panels that must not)
+TABS = {
+    'MATERIAL': ("Cube", ("EEVEE_MATERIAL_PT_context_material", "EEVEE_MATERIAL_PT_surface", "EDGELIGHT_PT_material"),
+                 ("EEVEE_MATERIAL_PT_volume", "EEVEE_MATERIAL_PT_settings", "MATERIAL_PT_freestyle_line")),
+    'DATA': (None, ("DATA_PT_context_light", "EDGELIGHT_PT_light"),
+             ("DATA_PT_EEVEE_light", "DATA_PT_EEVEE_shadow", "DATA_PT_light")),
+    'WORLD': ("Cube", ("WORLD_PT_context_world", "EEVEE_WORLD_PT_surface"), ("EEVEE_WORLD_PT_volume",)),
+}
+
+
+def properties_tabs():
+    window, area, _ = properties_editor()
+    view_layer = bpy.context.view_layer
+    light = next(ob for ob in bpy.context.scene.objects if ob.type == 'LIGHT')
+    active = view_layer.objects.active
+    previous = area.spaces.active.context
+    for tab, (ob_name, shown, hidden) in TABS.items():
+        view_layer.objects.active = bpy.data.objects[ob_name] if ob_name else light
+        area.spaces.active.context = tab
+        area.tag_redraw()
+        yield 0.5
+        px, path = screenshot("properties_" + tab.lower())
+        crop = px[area.y:area.y + area.height, area.x:area.x + area.width, :3]
+        polls = panel_polls(shown + hidden)
+        check(f"{tab.lower()} tab: Blender's panels EdgeLight honours show, the others don't",
+              all(polls[n] for n in shown) and not any(polls[n] for n in hidden) and crop.std() > 0.02,
+              f"{path}: {polls}")
+    area.spaces.active.context = previous
+    view_layer.objects.active = active
+
+
 def steps():
     window, area, region = view3d()
     area.spaces.active.shading.type = 'RENDERED'
@@ -245,7 +293,32 @@ def steps():
     bpy.data.objects.remove(host)
     bpy.data.objects.remove(tile)
 
-    # 8. A final render started from the UI as an artist would (a render job with its own GPU
+    # 8. Blender's own panels in the Properties editor: the Material, Light and World tabs show
+    # the panels whose settings EdgeLight honours (their poll passes in that editor) and not
+    # EEVEE's that it ignores; each tab is drawn and captured.
+    yield from properties_tabs()
+
+    # 9. The toon ramp's colour-ramp widget: an edit (published on the message bus as the
+    # widget does) reaches the viewport through the material.
+    mat = bpy.data.materials["Cube"]
+    mat.edgelight.shading = 'RAMP'
+    mat.edgelight.shade_ramp = edgelight.color_ramp.new_ramp(((0.0, (0.1, 0.1, 0.3)), (0.5, (0.9, 0.8, 0.2))))
+    yield 0.5
+    redraw()
+    yield 0.5
+    c14 = counters()
+    element = edgelight.color_ramp.ramp_of(mat.edgelight).elements[1]
+    element.color = (0.9, 0.2, 0.2, 1.0)
+    bpy.msgbus.publish_rna(key=element.path_resolve("color", False))
+    yield 0.5
+    redraw()
+    yield 0.5
+    c15 = counters()
+    check("ramp widget edit: a new viewport image", c15["passes"] > c14["passes"], f"passes {c14['passes']} -> {c15['passes']}")
+    mat.edgelight.shading = 'PHONG'
+    yield 0.2
+
+    # 10. A final render started from the UI as an artist would (a render job with its own GPU
     # context, not -b).
     import edgelight
     edgelight.engine.capture = True
@@ -261,6 +334,40 @@ def steps():
     hl = rec.get("highlight")
     check("F12 from the UI completes with highlights", hl is not None and (hl[..., 3] > 0).sum() > 100,
           f"edges drawn {getattr(rec.get('stats'), 'edges_drawn', None)}")
+
+    # 9. A multi-sample F12: progress per sample and partial images reach Blender while it
+    # renders; Esc pressed in the render window (xdotool, from a shell: Blender's own event loop
+    # is what is measured). On 3.4 the main thread waits for the render's GPU context lock
+    # until render() returns (docs/addon.md, "Progress and cancel"), so the freeze and the
+    # cancel are measured and printed, not required.
+    import subprocess
+    import time
+    edgelight.engine.last_render.clear()
+    scene = bpy.context.scene
+    scene.edgelight.samples = 64
+    scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = 1920, 1080, 100
+    esc = subprocess.Popen(["sh", "-c", "sleep 2; w=$(xdotool search --name 'Blender Render' | tail -1); "
+                            "[ -n \"$w\" ] && xdotool key --window \"$w\" Escape"])
+    invoked = time.monotonic()
+    with bpy.context.temp_override(window=window, area=area, region=region):
+        bpy.ops.render.render('INVOKE_DEFAULT')
+    ticks = [invoked]
+    for _ in range(1200):
+        yield 0.1
+        ticks.append(time.monotonic())
+        if "stats" in edgelight.engine.last_render and not bpy.app.is_job_running('RENDER'):
+            break
+    esc.wait(timeout=30)
+    rec = edgelight.engine.last_render
+    progress = rec.get("progress", [])
+    done = [p[0] for p in progress]
+    span = progress[-1][2] - progress[0][2] if progress else 0.0
+    stats = rec.get("stats")
+    check("F12 progress: reported after every sample, while rendering",
+          done == list(range(1, len(done) + 1)) and len(done) == getattr(stats, "samples", -1) and span > 0.2,
+          f"{len(done)} progress reports over {span:.2f} s, {rec.get('previews', 0)} partial images")
+    print(f"NOTE F12 from the UI: longest main-thread pause {np.max(np.diff(ticks)):.2f} s; Esc at 2 s: "
+          f"{getattr(stats, 'samples', None)}/{getattr(stats, 'samples_requested', None)} samples drawn", flush=True)
 
 
 def run():

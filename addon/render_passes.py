@@ -1,0 +1,136 @@
+"""Render passes beside Combined, offered the way Cycles and EEVEE offer theirs: Blender's Depth
+and Normal when the view layer asks for them (use_pass_z, use_pass_normal), and EdgeLight's own
+Highlights, Lines and Surface, switched on per view layer (View Layer Properties -> EdgeLight
+Passes). How Combined is recomposed from them: docs/addon.md, "Render passes".
+"""
+import bpy
+import numpy as np
+
+from . import compat
+
+# Where nothing was drawn, Depth holds what Cycles and EEVEE write there.
+BACKGROUND_DEPTH = 1e10
+
+# EdgeLight's own passes: (pass name, view-layer setting, frame buffer)
+OWN_PASSES = (
+    ("Highlights", "use_pass_highlights", "highlight"),
+    ("Lines", "use_pass_lines", "lines"),
+    ("Surface", "use_pass_surface", "surface"),
+)
+
+
+def _requery(self, context):
+    """Blender asks the engine again which passes exist (the compositor's Render Layers node
+    grows or loses its sockets)."""
+    view_layer = getattr(context, "view_layer", None)
+    if view_layer is not None:
+        view_layer.update_render_passes()
+
+
+class EdgeLightViewLayerSettings(bpy.types.PropertyGroup):
+    use_pass_highlights: bpy.props.BoolProperty(
+        name="Highlights", default=False, update=_requery,
+        description="The rounded edges' highlight bands alone, premultiplied RGBA (colour times "
+                    "weight, weight): laid over Surface they give the highlighted surface")
+    use_pass_lines: bpy.props.BoolProperty(
+        name="Lines", default=False, update=_requery,
+        description="The ink lines alone, premultiplied RGBA (colour times opacity, opacity): "
+                    "laid over the highlighted surface")
+    use_pass_surface: bpy.props.BoolProperty(
+        name="Surface", default=False, update=_requery,
+        description="The shaded surface without highlights or lines, averaged over the samples, "
+                    "premultiplied RGBA (transparent where nothing was drawn)")
+
+
+def enabled(view_layer):
+    """[(pass name, channels, channel ids, type, frame buffer)] the view layer asks for,
+    Combined first (frame buffer None: the image itself)."""
+    out = [("Combined", 4, "RGBA", 'COLOR', None)]
+    if view_layer.use_pass_z:
+        out.append(("Depth", 1, "Z", 'VALUE', "depth"))
+    if view_layer.use_pass_normal:
+        out.append(("Normal", 3, "XYZ", 'VECTOR', "normal"))
+    settings = getattr(view_layer, "edgelight", None)
+    for name, prop, buffer in OWN_PASSES:
+        if settings is not None and getattr(settings, prop):
+            out.append((name, 4, "RGBA", 'COLOR', buffer))
+    return out
+
+
+def register_passes(engine, scene, view_layer):
+    for name, channels, chan_id, kind, _ in enabled(view_layer):
+        engine.register_pass(scene, view_layer, name, channels, chan_id, kind)
+
+
+def buffers_wanted(view_layer):
+    """{frame buffer: None} for frame.render to fill: only what an enabled pass needs."""
+    return {buffer: None for *_, buffer in enabled(view_layer) if buffer}
+
+
+def pass_pixels(buffer, data):
+    """A frame buffer ((h, w, 4) float32) as its render pass stores it."""
+    if buffer == "depth":  # 1 / view depth, 0 = nothing drawn -> distance along the view axis
+        inv = data[..., 0]
+        out = np.full(inv.shape + (1,), BACKGROUND_DEPTH, np.float32)
+        drawn = inv > 0.0
+        out[drawn, 0] = 1.0 / inv[drawn]
+        return out
+    if buffer == "normal":
+        return data[..., :3]
+    if buffer == "lines":  # the line target keeps straight alpha; passes are premultiplied
+        return np.concatenate([data[..., :3] * data[..., 3:4], data[..., 3:4]], axis=-1)
+    return data
+
+
+def write(result_layer, view_layer, buffers, record=None):
+    """Writes every enabled pass that has its buffer; `record`, when a dict, receives what was
+    written, by pass name (the tests' capture)."""
+    for name, _, _, _, buffer in enabled(view_layer)[1:]:
+        render_pass = result_layer.passes.get(name)
+        data = buffers.get(buffer)
+        if render_pass is None or data is None:
+            continue  # cancelled before the buffer was drawn
+        pixels = pass_pixels(buffer, data)
+        compat.write_pass_channels(render_pass, pixels.reshape(-1, pixels.shape[-1]))
+        if record is not None:
+            record[name] = pixels
+
+
+class VIEWLAYER_PT_edgelight_passes(bpy.types.Panel):
+    bl_label = "EdgeLight Passes"
+    bl_space_type = 'PROPERTIES'
+    bl_region_type = 'WINDOW'
+    bl_context = "view_layer"
+    COMPAT_ENGINES = {'EDGELIGHT'}
+
+    @classmethod
+    def poll(cls, context):
+        return context.engine in cls.COMPAT_ENGINES
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        layout.use_property_decorate = False
+        view_layer = context.view_layer
+        col = layout.column(heading="Data")
+        col.prop(view_layer, "use_pass_z")
+        col.prop(view_layer, "use_pass_normal")
+        col = layout.column(heading="EdgeLight")
+        settings = view_layer.edgelight
+        for _, prop, _ in OWN_PASSES:
+            col.prop(settings, prop)
+
+
+_classes = (EdgeLightViewLayerSettings, VIEWLAYER_PT_edgelight_passes)
+
+
+def register():
+    for cls in _classes:
+        bpy.utils.register_class(cls)
+    bpy.types.ViewLayer.edgelight = bpy.props.PointerProperty(type=EdgeLightViewLayerSettings)
+
+
+def unregister():
+    del bpy.types.ViewLayer.edgelight
+    for cls in reversed(_classes):
+        bpy.utils.unregister_class(cls)

@@ -1,0 +1,179 @@
+"""Render passes: Depth, Normal and EdgeLight's Highlights, Lines and Surface, registered with
+Blender (the compositor's Render Layers node shows them) and recomposing Combined within 1/255,
+by the formula of docs/addon.md and by Blender's own compositor."""
+import os
+import tempfile
+import unittest
+
+import bpy
+import numpy as np
+
+import helpers
+import scene_zoo as zoo
+
+OWN = ("use_pass_highlights", "use_pass_lines", "use_pass_surface")
+
+
+def enable_passes(view_layer, on=True):
+    view_layer.use_pass_z = view_layer.use_pass_normal = on
+    for prop in OWN:
+        setattr(view_layer.edgelight, prop, on)
+
+
+def lines_scene(samples=4, transparent=False):
+    """The cube sample with highlights and ink lines, a few jittered samples."""
+    scene = helpers.open_sample("cube", samples=samples)
+    lines = helpers.only_lines(scene, silhouette=3.0, crease=2.0)
+    # Coloured, half-opaque ink: black or opaque ink would hide a premultiplication mistake.
+    lines.line_silhouette.color, lines.line_silhouette.opacity = (0.9, 0.5, 0.1), 0.6
+    scene.render.film_transparent = transparent
+    helpers.set_world_color(scene, (0.2, 0.3, 0.4))
+    enable_passes(scene.view_layers[0])
+    return scene
+
+
+def over(front, back):
+    """Premultiplied `front` over `back` (RGBA): the compositor's Alpha Over."""
+    return front + (1.0 - front[..., 3:4]) * back
+
+
+def recompose(passes, world, transparent):
+    """Combined from the passes (docs/addon.md, "Render passes")."""
+    d = over(passes["Lines"], over(passes["Highlights"], passes["Surface"]))
+    behind = np.array([*world, 1.0], np.float32) * (0.0 if transparent else 1.0)
+    return over(d, behind)
+
+
+def alpha_over(tree, background, foreground):
+    node = tree.nodes.new("CompositorNodeAlphaOver")
+    inputs = [i for i in node.inputs if i.type == 'RGBA']  # (background, foreground) on every version
+    tree.links.new(background, inputs[0])
+    tree.links.new(foreground, inputs[1])
+    return node.outputs[0]
+
+
+def compositor(scene):
+    """The scene's compositor tree, emptied, and the socket whose image is the composited frame
+    (5.0: a node group with a Group Output; earlier: scene.node_tree with a Composite node)."""
+    if hasattr(scene, "compositing_node_group"):
+        tree = bpy.data.node_groups.new("Recompose", "CompositorNodeTree")
+        tree.interface.new_socket("Image", in_out='OUTPUT', socket_type='NodeSocketColor')
+        scene.compositing_node_group = tree
+        return tree, tree.nodes.new("NodeGroupOutput").inputs[0]
+    scene.use_nodes = True
+    tree = scene.node_tree
+    tree.nodes.clear()
+    return tree, tree.nodes.new("CompositorNodeComposite").inputs[0]
+
+
+class Registered(unittest.TestCase):
+    def test_render_layers_node_offers_the_enabled_passes(self):
+        scene = lines_scene()
+        tree, _ = compositor(scene)
+        node = tree.nodes.new("CompositorNodeRLayers")
+        names = {o.name for o in node.outputs if o.enabled}
+        for name in ("Image", "Depth", "Normal", "Highlights", "Lines", "Surface"):
+            self.assertIn(name, names)
+        enable_passes(scene.view_layers[0], False)
+        scene.view_layers[0].update_render_passes()
+        names = {o.name for o in node.outputs if o.enabled}
+        self.assertFalse({"Highlights", "Lines", "Surface", "Normal"} & names, names)
+
+    def test_passes_off_read_back_nothing(self):
+        helpers.needs_gpu()
+        scene = lines_scene(samples=1)
+        enable_passes(scene.view_layers[0], False)
+        rec = helpers.render(resolution=(160, 120))
+        self.assertEqual(rec["passes"], {})
+
+
+class Recompose(unittest.TestCase):
+    def check(self, transparent):
+        helpers.needs_gpu()
+        scene = lines_scene(transparent=transparent)
+        rec = helpers.render(resolution=(320, 240))
+        p = rec["passes"]
+        self.assertEqual(set(p), {"Depth", "Normal", "Highlights", "Lines", "Surface"})
+        self.assertGreater((p["Highlights"][..., 3] > 0.05).sum(), 50, "highlights in their pass")
+        self.assertGreater((p["Lines"][..., 3] > 0.5).sum(), 200, "ink in its pass")
+        error = np.abs(recompose(p, rec["scene"].ambient, transparent) - rec["pixels"]).max()
+        self.assertLess(error, 1.0 / 255.0, f"transparent={transparent}")
+        return scene, rec
+
+    def test_combined_from_the_passes_opaque_film(self):
+        self.check(False)
+
+    def test_combined_from_the_passes_transparent_film(self):
+        self.check(True)
+
+    def test_blenders_compositor_recomposes_combined(self):
+        """Alpha Over (premultiplied) of Highlights on Surface, Lines on that, the result on the
+        world colour, in Blender's compositor: the frame it writes equals Combined."""
+        helpers.needs_gpu()
+        scene = lines_scene()
+        tree, out = compositor(scene)
+        layers = tree.nodes.new("CompositorNodeRLayers")
+        world = tree.nodes.new("CompositorNodeRGB")
+        world.outputs[0].default_value = (0.2, 0.3, 0.4, 1.0)
+        o = layers.outputs
+        image = alpha_over(tree, o["Surface"], o["Highlights"])
+        image = alpha_over(tree, image, o["Lines"])
+        tree.links.new(alpha_over(tree, world.outputs[0], image), out)
+        scene.render.use_compositing = True
+        s = scene.render.image_settings
+        s.file_format, s.color_depth, s.color_mode = 'OPEN_EXR', '32', 'RGBA'
+        with tempfile.TemporaryDirectory() as tmp:
+            scene.render.filepath = os.path.join(tmp, "recomposed.exr")
+            rec = helpers.render(resolution=(320, 240))
+            bpy.ops.render.render(write_still=True)
+            img = bpy.data.images.load(scene.render.filepath)
+            w, h = img.size
+            px = np.empty(w * h * 4, np.float32)
+            img.pixels.foreach_get(px)
+            bpy.data.images.remove(img)
+        self.assertEqual((h, w), (240, 320))
+        error = np.abs(px.reshape(h, w, 4) - rec["pixels"]).max()
+        self.assertLess(error, 1.0 / 255.0)
+        self.assertGreater((rec["passes"]["Lines"][..., 3] > 0.5).sum(), 200)
+
+
+class DepthAndNormal(unittest.TestCase):
+    def plane_scene(self, ortho=False):
+        scene = helpers.empty_scene(200, 150)
+        zoo.mesh_object("Plane", [(-2, -1.5, 0), (2, -1.5, 0), (2, 1.5, 0), (-2, 1.5, 0)], [(0, 1, 2, 3)])
+        # Tilted about x: the plane's distance along the view axis varies across the image.
+        cam = helpers.add_camera((0.0, -3.0, 5.0), (0.0, 0.0, 0.0), lens=35.0)
+        if ortho:
+            cam.data.type, cam.data.ortho_scale = 'ORTHO', 6.0
+        enable_passes(scene.view_layers[0])
+        return scene, cam
+
+    def check(self, ortho):
+        helpers.needs_gpu()
+        _, cam = self.plane_scene(ortho)
+        rec = helpers.render()
+        depth, normal = rec["passes"]["Depth"][..., 0], rec["passes"]["Normal"]
+        world = np.array(cam.matrix_world)
+        axis, eye = -world[:3, 2], world[:3, 3]
+        c = rec["camera"]
+        unproject = np.linalg.inv(c.projection @ c.view)
+        for point in ((0.0, 0.0, 0.0), (1.5, 1.0, 0.0), (-1.0, -1.2, 0.0)):
+            x, y = np.floor(helpers.project(rec, [point])[0]).astype(int)
+            # Where the pixel centre's ray meets the plane z = 0, and its distance along the view axis.
+            ndc = np.array([(x + 0.5) / c.width, (y + 0.5) / c.height]) * 2.0 - 1.0
+            near, far = (unproject @ np.array([*ndc, z, 1.0]) for z in (-1.0, 1.0))
+            near, far = near[:3] / near[3], far[:3] / far[3]
+            hit = near + (far - near) * (near[2] / (near[2] - far[2]))
+            want = float(np.dot(hit - eye, axis))
+            self.assertAlmostEqual(depth[y, x], want, delta=1e-4 * want, msg=f"{point}")
+            np.testing.assert_allclose(normal[y, x], (0.0, 0.0, 1.0), atol=1e-4)
+        empty = rec["surface"][..., 3] == 0.0
+        self.assertGreater(empty.sum(), 100)
+        self.assertTrue((depth[empty] == 1e10).all(), "background: the depth Cycles and EEVEE write there")
+        self.assertTrue((depth[~empty] < 10.0).all())
+
+    def test_depth_is_distance_along_the_view_axis(self):
+        self.check(False)
+
+    def test_depth_orthographic(self):
+        self.check(True)
