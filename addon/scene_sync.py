@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from . import compat, native
-from .lines import static_lines
+from .lines import static_lines, surface_ids
 from .materials import shading_of
 
 GEOMETRY_TYPES = {'MESH', 'CURVE', 'SURFACE', 'FONT', 'META'}
@@ -23,6 +23,7 @@ class EdgeSet:
     n1: np.ndarray
     n2: np.ndarray
     radius: np.ndarray
+    faces: np.ndarray = None           # (N, 2) float32 surface ids of its two faces (band visibility)
 
     def __len__(self):
         return len(self.radius)
@@ -255,7 +256,7 @@ def choose_edges(d, shading):
         sel = np.flatnonzero(chosen & (slot_a == slot))
         out[int(slot)] = EdgeSet(positions[edges[sel, 0]], positions[edges[sel, 1]],
                                  np.ascontiguousarray(normals[sel, :3]), np.ascontiguousarray(normals[sel, 3:]),
-                                 radius[sel])
+                                 radius[sel], surface_ids(d, np.stack([face_a[sel], face_b[sel]], axis=1)))
     return out
 
 

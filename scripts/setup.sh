@@ -13,7 +13,6 @@ packages=(
   blender python3-numpy # Debian's Blender 3.4 (system Python 3.11) for the add-on
   python3-matplotlib    # the ground-truth benchmark's Pareto plot (bench/plot_ground_truth.py)
   python3-pil           # the farm tests read rendered PNGs (tests/farm)
-  npm                   # acorn, which parses the Flamenco job type in the farm tests
   python3-venv          # venvs for Blender 4.2 / 4.5 / 5.x as Python modules (setup_bpy.sh)
   xvfb                  # the UI under xvfb-run for viewport tests
   xdotool               # presses Esc in the render window in the viewport session
@@ -24,6 +23,8 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# npm (acorn for the farm tests): any npm will do, e.g. one that came with another nodejs.
+command -v npm >/dev/null || missing+=(npm)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}"
   sudo_cmd=""
@@ -31,4 +32,22 @@ if [ ${#missing[@]} -gt 0 ]; then
   export DEBIAN_FRONTEND=noninteractive
   $sudo_cmd apt-get update -qq
   $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# The farm tests' tools, cached under build/farm (reused while the stamp matches): openjd-cli in
+# a venv of Debian's python3.11 (runs farm/edgelight-render.openjd.yaml), acorn from npm (parses
+# the Flamenco job type). A failure leaves the farm tests failing, each saying what is missing.
+farm="${BUILD_DIR:-$(cd "$(dirname "$0")/.." && pwd)/build}/farm"
+want="openjd-cli==0.8.0 acorn@8.19.0"
+if [ ! -f "$farm/stamp" ] || [ "$(cat "$farm/stamp")" != "$want" ]; then
+  echo "setup: installing $want into $farm"
+  rm -rf "$farm/venv" "$farm/node_modules"
+  mkdir -p "$farm"
+  if /usr/bin/python3.11 -m venv "$farm/venv" &&
+     "$farm/venv/bin/python" -m pip install --no-cache-dir --disable-pip-version-check -q "openjd-cli==0.8.0" &&
+     npm install --prefix "$farm" --no-audit --no-fund --silent "acorn@8.19.0" >/dev/null; then
+    echo "$want" > "$farm/stamp"
+  else
+    echo "setup: installing the farm tools failed (the farm tests will say so)" >&2
+  fi
 fi

@@ -10,6 +10,9 @@ void main()
 {
   vec4 inputs = vec4(edge_point, edge_radius) + table_params + base_color + spec_color + tint +
                 texelFetch(cos_power_table, ivec2(0), 0).r + texelFetch(surface_depth, ivec2(0), 0).r;
+#ifdef EL_EDGE_IDS
+  inputs += texelFetch(surface_id, ivec2(0), 0).r + edge_faces.x + instance_id;
+#endif
   out_color = inputs * 1e-20;
 }
 #else
@@ -22,17 +25,27 @@ void main()
   float dist = persp ? el_safe_length(to_eye) : 1.0;
   vec3 V = el_safe_normalize(to_eye);
 
-  /* Visibility first (cheap): the edge lies on its own surface, whose depth at pixels next to the
-   * line differs by up to the lateral distance times the faces' depth slope. */
   float world_per_px = dist / frame.camera.x;
   float across = dot(pc - edge_screen.xy, edge_screen.zw);
+  float inv_surface = texelFetch(surface_depth, ivec2(pc), 0).r;
+  vec4 view_X = frame.view * vec4(X, 1.0);
+  float edge_depth = -view_X.z;
+#ifdef EL_EDGE_IDS
+  /* Visibility first (cheap): the band lies on the edge's two faces, so it shows where one of
+   * them does (the surface pass's ids), or the background does (past an outline), or a surface
+   * no nearer than the edge within half a pixel's footprint (docs/lines.md, "Visibility"): never
+   * on a surface that hides its edge, however thin. */
+  vec2 id = texelFetch(surface_id, ivec2(pc), 0).rg;
+  bool own = id.x == instance_id && id.y > 0.0 && (id.y == edge_faces.x || id.y == edge_faces.y);
+  float bias = own ? 3.0e38 : 0.5 * world_per_px + 1e-5 * dist;
+#else
+  /* Without ids (the OSMesa renderer): the edge lies on its own surface, whose depth at pixels
+   * next to the line differs by up to the lateral distance times the faces' depth slope. */
   float c1 = abs(dot(normalize(edge_n1), V)), c2 = abs(dot(normalize(edge_n2), V));
   float cmin = max(min(c1, c2), 1.0 / 16.0);
   float slope = sqrt(max(1.0 - cmin * cmin, 0.0)) / cmin;
   float bias = (abs(across) + 1.0) * world_per_px * (slope + 0.05) + 1e-5 * dist;
-  float inv_surface = texelFetch(surface_depth, ivec2(pc), 0).r;
-  vec4 view_X = frame.view * vec4(X, 1.0);
-  float edge_depth = -view_X.z;
+#endif
   /* The near and far planes clip the edge line here, not the quad: its depth was pulled toward
    * the eye for the early depth test (edge_highlight.vert). */
   vec4 clip_X = frame.projection * view_X;

@@ -65,6 +65,7 @@ void main()
 {
   vec3 w0 = (model * vec4(p0, 1.0)).xyz;
   vec3 w1 = (model * vec4(p1, 1.0)).xyz;
+  edge_faces = faces;
   edge_n1 = el_transform_normal(model, n1);
   edge_n2 = el_transform_normal(model, n2);
   edge_dir = w1 - w0;

@@ -226,6 +226,7 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
     defines = {"EL_TABLE_LAYOUT": int(params[0]), "EL_EDGE_METHOD": int(edge_method())}
     if edge_floor():
         defines["EL_EDGE_FLOOR"] = 1
+    defines["EL_EDGE_IDS"] = 1  # the surface pass wrote ids: visibility by face (docs/lines.md)
     shader = shader_lib.get("edge_highlight", defines)
     with targets.highlight_fb.bind():
         targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
@@ -238,13 +239,15 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
         shader.uniform_block("frame", ubo)
         shader.uniform_sampler("cos_power_table", tex)
         shader.uniform_sampler("surface_depth", targets.surface_depth)
+        shader.uniform_sampler("surface_id", targets.surface_id)
         if edge_method() != EDGE_METHODS["quadrature"]:  # reads no table: its program drops the uniform
             shader.uniform_float("table_params", (*params[:3], 0.0))
-        for inst in scene.instances:
+        for index, inst in enumerate(scene.instances):
             gm = gpu_meshes[id(inst.mesh)]
             if not gm.edges:
                 continue
             shader.uniform_float("model", _mat(inst.matrix))
+            shader.uniform_float("instance_id", float(index + 1))
             for slot, batch in gm.edges.items():
                 s = gm.extract.slot_shading[slot]
                 _shading_uniforms(shader, s)
@@ -330,9 +333,10 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         data = frame_data(camera, projection, scene)
         ubo = gpu.types.GPUUniformBuf(gpu.types.Buffer('FLOAT', data.size, data))
         whiteout = settings.lines is not None and settings.lines.whiteout
-        # The first sample's surface also writes ids where lines are drawn: the line pass runs
-        # on it alone.
-        draw_surface(targets, scene, gpu_meshes, ubo, whiteout, ids=s == 0 and settings.lines is not None)
+        # The first sample's surface also writes ids for the edge and line passes, which run on
+        # it alone.
+        draw_surface(targets, scene, gpu_meshes, ubo, whiteout,
+                     ids=s == 0 and (settings.lines is not None or (settings.highlights and not whiteout)))
         if s == 0 and first_sample:
             first_sample()
         # The edge and line passes run once, on the unjittered first sample: their coverage is

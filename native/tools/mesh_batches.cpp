@@ -120,6 +120,7 @@ EdgeQuads edge_quads(const EdgeSet& edges, float radius, Provoking provoking) {
     q.n1.resize(12 * n);
     q.n2.resize(12 * n);
     q.corner.resize(16 * n);
+    q.faces.assign(8 * n, 0.0f);
     for (size_t i = 0; i < n; ++i) {
         for (uint32_t c = 0; c < 4; ++c) {
             const size_t s = slot(i, c);

@@ -27,6 +27,9 @@ struct EdgeSet {
 struct EdgeQuads {
     std::vector<float> p0, p1, n1, n2;  // 3 per vertex
     std::vector<float> corner;          // 4 per vertex: end, side, radius, shading vertex
+    // 2 per vertex: the surface ids of the edge's faces, all 0 here: this renderer writes no id
+    // image, and its edge program is built without EL_EDGE_IDS (depth decides visibility).
+    std::vector<float> faces;
     std::vector<uint32_t> indices;      // 6 per edge
 };
 

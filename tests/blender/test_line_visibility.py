@@ -103,3 +103,30 @@ class LineVisibility(unittest.TestCase):
         small to show in the id image."""
         helpers.needs_gpu()
         self.check(self.measure(lambda: off_part("cow"), (2.6, -3.2, 1.6)), "cow")
+
+
+class BandVisibility(unittest.TestCase):
+    def test_no_band_on_a_thin_plate_in_front_of_its_edge(self):
+        """A rounded edge 2 cm behind a plate, its top face seen at a grazing angle: a depth bias
+        that follows that face's slope let the band show on the plate; the ids do not."""
+        helpers.needs_gpu()
+        import scene_zoo as zoo
+        scene = helpers.empty_scene(480, 360)
+        helpers.add_camera((0.4, -7.0, 1.08), (0.0, 0.0, 0.9))
+        helpers.add_sun((0.3, -1.0, 0.8), 5.0)
+        cube = zoo.box("Cube", 2.0)
+        red = zoo.material("Red", (0.8, 0.02, 0.02))
+        red.edgelight.radius = 0.06
+        cube.data.materials.append(red)
+        plate = zoo.box("Plate", 1.0, (0.0, -1.03, 0.9))
+        plate.scale = (1.0, 0.01, 0.6)
+        green = zoo.material("Green", (0.02, 0.8, 0.02))
+        green.edgelight.use_rounding = False
+        plate.data.materials.append(green)
+        rec = helpers.render()
+        surface = np.asarray(rec["surface"])
+        on_plate = surface[..., 1] > 2.0 * surface[..., 0]
+        band = np.asarray(rec["highlight"])[..., 3] > 1.0 / 255.0
+        self.assertGreater(on_plate.sum(), 2000)
+        self.assertGreater((band & ~on_plate).sum(), 50, "the edge's band shows beside the plate")
+        self.assertEqual(int((band & on_plate).sum()), 0, "band pixels on the plate")

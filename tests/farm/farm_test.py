@@ -33,6 +33,9 @@ OPENJD = os.path.join(BUILD, "farm", "venv", "bin", "openjd")
 ENGINE_CHECK = "import bpy; assert bpy.context.scene.render.engine == 'EDGELIGHT', 'EdgeLight is not enabled'"
 
 
+TMP = []  # this test's directory
+
+
 class Failed(Exception):
     pass
 
@@ -51,11 +54,18 @@ def blender_command(version):
     return [os.path.join(venv, "bin", "python"), os.path.join(ROOT, "farm", "blender_bpy.py")]
 
 
+_package = []
+
+
 def package():
-    zips = sorted((os.path.join(BUILD, n) for n in os.listdir(BUILD) if n.startswith("edgelight-") and n.endswith("-linux-x64.zip")),
-                  key=os.path.getmtime)
-    check(zips, f"no package in {BUILD} (cmake --build build --target package_addon)")
-    return zips[-1]
+    """The newest build/edgelight-*-linux-x64.zip, copied once per test: a rebuild while the
+    test runs must not change what its workers install."""
+    if not _package:
+        zips = sorted((os.path.join(BUILD, n) for n in os.listdir(BUILD) if n.startswith("edgelight-") and n.endswith("-linux-x64.zip")),
+                      key=os.path.getmtime)
+        check(zips, f"no package in {BUILD} (cmake --build build --target package_addon)")
+        _package.append(shutil.copy(zips[-1], TMP[0]))
+    return _package[0]
 
 
 def run(cmd, env, timeout=120, expect=0):
@@ -194,6 +204,7 @@ TESTS = {"install": test_install, "openjd": test_openjd, "same_frame": test_same
 
 def main(mode, version):
     tmp = tempfile.mkdtemp(prefix=f"edgelight_farm_{mode}_")
+    TMP.append(tmp)
     start = time.monotonic()
     try:
         TESTS[mode](version, tmp)

@@ -18,9 +18,8 @@ scene.render.image_settings.file_format = 'PNG'
 scene.render.image_settings.color_mode = 'RGBA'
 scene.view_settings.view_transform = 'Standard'
 scene.frame_start, scene.frame_end = 1, 6
-if hasattr(scene, "edgelight"):  # else the engine's defaults render
-    scene.edgelight.samples = 2
-    scene.edgelight.use_lines = True  # silhouettes too: view-dependent, so they change per frame
+scene.edgelight.samples = 2  # run with the add-on enabled
+scene.edgelight.use_lines = True  # silhouettes too: view-dependent, so they change per frame
 
 cube = next(ob for ob in scene.objects if ob.type == 'MESH')
 for frame in range(1, 7):
