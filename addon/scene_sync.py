@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from . import compat, native
+from . import compat, native, radius_clamp
 from .lines import static_lines, surface_ids
 from .materials import shading_of
 
@@ -186,8 +186,11 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     # plus its place in the batch, since the slots' batches are drawn in this order.
     surface_id = np.empty(tri_count, np.uint32)
     surface_id[order] = np.arange(1, tri_count + 1, dtype=np.uint32)
+    polygons = radius_clamp.Polygons(_foreach(mesh.polygons, "loop_start", np.int64),
+                                     _foreach(mesh.polygons, "loop_total", np.int64),
+                                     _foreach(mesh.loops, "vertex_index", np.int64), tri_poly)
     out.edge_data = EdgeData(m.edge_flags(), m.edge_angles(), m.edge_normals(), edges, positions,
-                             *_first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id)
+                             *_first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id, polygons)
     out.edges = choose_edges(out.edge_data, shading)
     out.native = m
     out.update_lines(line_settings)
@@ -214,6 +217,18 @@ class EdgeData:
     sharp: np.ndarray
     bevel: np.ndarray
     surface_id: np.ndarray = None      # per triangle: 1 + its place in the slot-ordered surface batches
+    polygons: object = None            # radius_clamp.Polygons
+    face_widths: np.ndarray = None     # (E, 2) width of each edge's faces across it, NaN until needed
+
+    def widths_of(self, sel):
+        """The face widths of edges `sel`, computed once per edge (radius_clamp)."""
+        if self.face_widths is None:
+            self.face_widths = np.full((len(self.edges), 2), np.nan)
+        todo = sel[np.isnan(self.face_widths[sel, 0])]
+        if len(todo):
+            faces = np.stack([self.face_a[todo], self.face_b[todo]], axis=1)
+            self.face_widths[todo] = radius_clamp.widths(self.polygons, self.positions, self.edges[todo], faces)
+        return self.face_widths[sel]
 
 
 def rechoose_edges(extract):
@@ -251,6 +266,11 @@ def choose_edges(d, shading):
     en_b, pick_b, rad_b = picked(slot_b)
     chosen = ok & en_a & en_b & (pick_a | pick_b)
     radius = np.minimum(np.where(pick_a, rad_a, np.inf), np.where(pick_b, rad_b, np.inf)).astype(np.float32)
+    # No larger than the faces allow (Clamp Overlap): past that a band is no fillet's image.
+    picked_edges = np.flatnonzero(chosen)
+    if d.polygons is not None and len(picked_edges):
+        limit = radius_clamp.max_radius(d.widths_of(picked_edges), angles[picked_edges])
+        radius[picked_edges] = np.minimum(radius[picked_edges], limit).astype(np.float32)
     out = {}
     for slot in np.unique(slot_a[chosen]):
         sel = np.flatnonzero(chosen & (slot_a == slot))

@@ -34,12 +34,12 @@ class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
         layout.use_property_split = True
         layout.active = s.use_rounding
         layout.prop(s, "radius")
-        layout.prop(s, "K")
-        layout.prop(s, "tint")
-        # One toggle per row: a row of three cuts their labels at the default panel width.
-        col = layout.column(heading="Edges", align=True)
-        for rule in ('ANGLE', 'SHARP', 'BEVEL'):
-            col.prop_enum(s, "selection", rule)
+        # Short labels: the panel is the highlight's, and "Highlight Strength" (the name tooltips
+        # and the animation editors show) is cut off at the default panel width.
+        layout.prop(s, "K", text="Strength")
+        layout.prop(s, "tint", text="Tint")
+        # Stacked, not a row of three: a row cuts their labels at the default panel width.
+        layout.column(align=True).prop(s, "selection", expand=True)
         sub = layout.column()
         sub.active = 'ANGLE' in s.selection
         sub.prop(s, "angle")
@@ -145,9 +145,7 @@ class EDGELIGHT_PT_lines(EdgeLightPanel, bpy.types.Panel):
         layout.active = s.use_lines
         layout.prop(s, "crease_angle_faces")  # Freestyle's convention, the one artists know
         layout.prop(s, "crease_angle", text="Normals Differ By")
-        col = layout.column(heading="Marks", align=True)
-        for mark in ('FREESTYLE', 'SHARP', 'SEAM'):
-            col.prop_enum(s, "marks", mark)
+        layout.column(align=True).prop(s, "marks", expand=True)
         layout.prop(s, "hidden_lines")
         sub = layout.column()
         sub.active = s.hidden_lines == 'DIMMED'
