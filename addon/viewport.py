@@ -203,7 +203,8 @@ class ViewportState:
             self.image_valid = True
         self.counters.objects = len(self.instances)
         blit(engine, depsgraph.scene, self.targets.result)
-        engine.update_stats("EdgeLight", self.summary() + (f" | {self.reports[-1]}" if self.reports else ""))
+        summary = self.summary(debug=depsgraph.scene.edgelight.show_debug_stats)
+        engine.update_stats("EdgeLight", summary + (f" | {self.reports[-1]}" if self.reports else ""))
 
     def _update_view_lines(self, scene, camera, view_key):
         """Silhouettes and contours for this view: native view calls and new batches only when
@@ -255,11 +256,13 @@ class ViewportState:
                 culled += int(len(keep) - keep.sum())
         self.counters.edges_drawn, self.counters.edges_culled = drawn, culled
 
-    def summary(self):
+    def summary(self, debug=False):
+        """The status bar's line; the developer counters only with the Debug panel's option."""
         c = self.counters
-        return (f"{c.objects} objects | edges {c.edges_drawn} drawn, {c.edges_culled} culled | "
-                f"lines {c.lines_drawn} | "
-                f"cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}")
+        text = f"{c.objects} objects | edges {c.edges_drawn} drawn, {c.edges_culled} culled | lines {c.lines_drawn}"
+        if debug:
+            text += f" | cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}"
+        return text
 
 
 def scene_signature(state, scene):

@@ -13,6 +13,7 @@ packages=(
   blender python3-numpy # Debian's Blender 3.4 (system Python 3.11) for the add-on
   python3-matplotlib    # the ground-truth benchmark's Pareto plot (bench/plot_ground_truth.py)
   python3-pil           # the farm tests read rendered PNGs (tests/farm)
+  librsvg2-bin          # rsvg-convert: the SVG output tests rasterise the written SVG
   python3-venv          # venvs for Blender 4.2 / 4.5 / 5.x as Python modules (setup_bpy.sh)
   xvfb                  # the UI under xvfb-run for viewport tests
   xdotool               # presses Esc in the render window in the viewport session

@@ -51,8 +51,13 @@ def box(name, size=1.0, location=(0.0, 0.0, 0.0), collection=None):
 
 
 def material(name, rgb):
+    """A material of colour rgb on every version (5.0 renders materials from their node tree)."""
     mat = bpy.data.materials.new(name)
     mat.diffuse_color = (*rgb, 1.0)
+    if mat.node_tree is not None:
+        for node in mat.node_tree.nodes:
+            if node.type == 'BSDF_PRINCIPLED':
+                node.inputs["Base Color"].default_value = (*rgb, 1.0)
     return mat
 
 

@@ -250,8 +250,9 @@ class Cancel(unittest.TestCase):
             style = getattr(scene.edgelight, "line_" + name)
             style.enabled, style.width = True, 1000.0
         waited, out, saved = self.interrupt(scene, 2.0)  # well inside the first sample's line pass
-        # Uninterrupted, the line pass runs on for 15 s (more on a loaded machine).
-        self.assertLess(waited, 6.0, out[-1500:])
+        # Uninterrupted, the line pass runs on for 13-15 s (more on a loaded machine); a cancel
+        # lands after the 128-segment batch under way: about 2 s idle, 7 s at a load of 9.
+        self.assertLess(waited, 8.0, out[-1500:])
         self.assertFalse(saved, "a cancelled frame is not saved")
 
     def test_ctrl_c_lands_between_samples_at_1080p(self):

@@ -79,6 +79,29 @@ class Ramp(unittest.TestCase):
         self.assertTrue(((colours >= lo - 1e-6) & (colours <= hi + 1e-6)).all())
 
 
+class RampData(unittest.TestCase):
+    """The ramp lives in a node group of its own: the user's node trees are untouched, and a
+    copied material shares the ramp until Make Single User."""
+
+    def test_ramp_leaves_the_material_tree_alone_and_copies_share_it(self):
+        helpers.empty_scene()
+        color_ramp = helpers.addon().color_ramp
+        mat = bpy.data.materials.new("Toon")
+        mat.use_nodes = True
+        nodes_before = sorted(n.name for n in mat.node_tree.nodes)
+        set_ramp(mat, [(0.0, DARK), (0.5, LIGHT)])
+        self.assertEqual(sorted(n.name for n in mat.node_tree.nodes), nodes_before)
+        self.assertEqual(mat.edgelight.shade_ramp.users, 1)
+        copy = mat.copy()
+        self.assertEqual(copy.edgelight.shade_ramp, mat.edgelight.shade_ramp)
+        self.assertEqual(mat.edgelight.shade_ramp.users, 2)
+        with bpy.context.temp_override(material=copy):
+            bpy.ops.edgelight.ramp_single_user()
+        self.assertNotEqual(copy.edgelight.shade_ramp, mat.edgelight.shade_ramp)
+        self.assertEqual((mat.edgelight.shade_ramp.users, copy.edgelight.shade_ramp.users), (1, 1))
+        self.assertEqual(color_ramp.stops_of(copy.edgelight), color_ramp.stops_of(mat.edgelight))
+
+
 class XToon(unittest.TestCase):
     def test_colour_follows_distance_through_the_image(self):
         helpers.empty_scene(400, 200, highlights=False)

@@ -21,7 +21,10 @@ scene.view_settings.view_transform = 'Standard'
 scene.frame_start, scene.frame_end = 1, 6
 scene.edgelight.samples = 2  # run with the add-on enabled
 scene.edgelight.use_lines = True  # silhouettes too: view-dependent, so they change per frame
-scene.edgelight.line_silhouette.opacity = 0.6  # the jittered surface edge shows through
+for name in dir(scene.edgelight):  # every line type translucent: the jittered surface edge shows
+    style = getattr(scene.edgelight, name) if name.startswith("line_") else None
+    if hasattr(style, "opacity"):
+        style.opacity = 0.6
 
 cube = next(ob for ob in scene.objects if ob.type == 'MESH')
 for frame in range(1, 7):
