@@ -10,7 +10,7 @@ bl_info = {
     "category": "Render",
 }
 
-from . import color_ramp, engine, properties, render_passes, ui, versioning  # noqa: E402
+from . import color_ramp, engine, properties, render_passes, svg_output, ui, versioning  # noqa: E402
 
 
 def register():
@@ -20,9 +20,11 @@ def register():
     render_passes.register()
     engine.register()
     ui.register()
+    svg_output.register()  # its panel sits in ui's Lines panel
 
 
 def unregister():
+    svg_output.unregister()
     ui.unregister()
     engine.unregister()
     render_passes.unregister()

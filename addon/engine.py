@@ -11,7 +11,7 @@ import bpy
 import gpu
 import numpy as np
 
-from . import compat, lines, native, render_passes, scene_sync, viewport
+from . import compat, lines, native, render_passes, scene_sync, svg_output, viewport
 from .passes import frame, toon
 
 # Tests set `capture = True` to receive the last render's record (pixels, pass buffers, camera,
@@ -229,8 +229,11 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             if capture:
                 record.setdefault("progress", []).append((done, total, time.monotonic()))
 
+        vector = {} if line_settings is not None and svg_output.wanted(depsgraph.scene) else None
         pixels, stats = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=keep,
-                                     passes=buffers, preview=preview)
+                                     passes=buffers, preview=preview, vector=vector)
+        if vector is not None and not self.test_break():  # the lines as SVG beside the frame
+            svg_output.write_render(depsgraph.scene, record["layer"], data, camera, line_settings, vector, record)
         for line in data.reports[reported:]:  # what the passes skipped
             self._report('WARNING', f"EdgeLight: {line}", record)
         if stats.samples == 0 and not self.test_break():

@@ -416,10 +416,10 @@ def run_mesh(name, args, scene, cam, holdout, edgelight, rows):
     ob = load_mesh(name, args)
     ob.data.materials.clear()
     ob.data.materials.append(holdout)
+    big = max(args.sizes, key=lambda s: s[0])
+    scene.render.resolution_x, scene.render.resolution_y = big  # before framing: its aspect counts
     frame_camera(cam, ob, scene, MESHES[name][1])
     tris = sum(len(p.vertices) - 2 for p in ob.data.polygons)
-    big = max(args.sizes, key=lambda s: s[0])
-    scene.render.resolution_x, scene.render.resolution_y = big
     # One EdgeLight render gives the camera the reference projects with.
     scene.render.engine = "EDGELIGHT"
     scene.render.use_freestyle = False

@@ -30,26 +30,32 @@ void main()
   float z = persp ? 1.0 / mix(1.0 / line_depth.x, 1.0 / line_depth.y, t) : mix(line_depth.x, line_depth.y, t);
   /* Visibility from the surface pass's ids (docs/lines.md, "Visibility"): visible where one of
    * the segment's own faces (line_faces, of this instance: line_vis.z) shows in the 3x3 pixels
-   * around the centre point, or else where what shows is no nearer than the line within a tight
-   * tolerance. For a line that can lie on an outline (line_vis.w: silhouettes, borders,
-   * contours) what shows is the farthest of the 3x3 pixels, so the background or what lies
-   * behind on its outer side keeps it; for any other line it is the centre pixel, so a crease
-   * near an outline is still hidden by what covers it. Unlike a depth bias that follows the
-   * faces' slope, the tolerance is half a pixel's footprint, so a wall thicker than that hides
-   * what lies behind it at any angle. */
+   * around the centre point, or else where what shows is no nearer than the line within half a
+   * pixel's footprint. What shows is the centre pixel's surface; for a line that can lie on an
+   * outline (line_vis.w: silhouettes, borders, contours) it is the farthest of the 3x3 pixels
+   * that show something other than the centre pixel's face (the background, or what lies
+   * behind on the outline's outer side), so an outline stays visible while a line under a
+   * surface seen at a grazing angle (one face across the 3x3) stays hidden. Unlike a depth bias
+   * that follows the faces' slope, the tolerance is fixed, so a wall thicker than half a
+   * pixel's footprint hides what lies behind it at any angle. */
   ivec2 q = ivec2(floor(c));
   ivec2 size = textureSize(surface_depth, 0) - 1;
-  float inv_far = 3.0e38;
+  ivec2 qc = clamp(q, ivec2(0), size);
+  vec2 id_c = texelFetch(surface_id, qc, 0).rg;
+  float inv_c = texelFetch(surface_depth, qc, 0).r;
+  float inv_other = inv_c;
   bool own = false;
   for (int dy = -1; dy <= 1; dy++) {
     for (int dx = -1; dx <= 1; dx++) {
       ivec2 at = clamp(q + ivec2(dx, dy), ivec2(0), size);
-      inv_far = min(inv_far, texelFetch(surface_depth, at, 0).r);
       vec2 id = texelFetch(surface_id, at, 0).rg;
       own = own || (id.x == line_vis.z && id.y > 0.0 && (id.y == line_faces.x || id.y == line_faces.y));
+      if (id != id_c) {
+        inv_other = min(inv_other, texelFetch(surface_depth, at, 0).r);
+      }
     }
   }
-  float inv_shown = line_vis.w > 0.5 ? inv_far : texelFetch(surface_depth, clamp(q, ivec2(0), size), 0).r;
+  float inv_shown = line_vis.w > 0.5 ? inv_other : inv_c;
   float world_per_px = (persp ? z : 1.0) / frame.camera.x;
   float bias = 0.5 * world_per_px + line_vis.y * abs(z);
   bool visible = own || inv_shown <= 0.0 || z <= 1.0 / inv_shown + bias;

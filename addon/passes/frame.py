@@ -399,7 +399,8 @@ PREVIEW_INTERVAL = 1.0
 PASS_BUFFERS = ("surface", "highlight", "lines", "depth", "normal")
 
 
-def render(scene, camera, settings, progress=None, cancelled=None, keep=None, passes=None, preview=None):
+def render(scene, camera, settings, progress=None, cancelled=None, keep=None, passes=None, preview=None,
+           vector=None):
     """Final render: draws and reads back ((h, w, 4) scene-linear float RGBA, Stats).
 
     `keep`, when a dict, receives the last sample's surface, highlight and depth buffers.
@@ -408,7 +409,10 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None, pa
     premultiplied bands and ink, "depth" the first sample's 1 / view depth (0 = empty), "normal"
     its world normals. Only what is named is drawn into or read back.
     `preview(pixels)`, when given, receives the image accumulated so far, at most once per
-    PREVIEW_INTERVAL seconds of drawing."""
+    PREVIEW_INTERVAL seconds of drawing.
+    `vector`, when a dict, receives what the line pass decided visibility from (the vector
+    output repeats its rule): "depth" and "ids" (the first sample's surface_depth and
+    surface_id) and "view_segments" (per instance, the view-dependent LineSegments)."""
     w, h = camera.width, camera.height
     wanted = set(passes or ())
     targets = Targets(w, h, normal="normal" in wanted, surface_sum="surface" in wanted)
@@ -416,7 +420,8 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None, pa
     for inst in scene.instances:
         if id(inst.mesh) not in gpu_meshes:
             gpu_meshes[id(inst.mesh)] = batches.GpuMesh(inst.mesh, LINE_CHUNK)
-    view_batches = [line_pass.line_batches(segs, LINE_CHUNK) for segs in view_line_segments(scene, camera, settings.lines)]
+    view_segments = view_line_segments(scene, camera, settings.lines)
+    view_batches = [line_pass.line_batches(segs, LINE_CHUNK) for segs in view_segments]
     last_preview = [time.monotonic()]
 
     def each_sample(done, total):
@@ -430,9 +435,12 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None, pa
         for name, texture in (("depth", targets.surface_depth), ("normal", targets.normal)):
             if name in wanted:
                 passes[name] = read(texture, w, h)
+        if vector is not None:  # the line pass reads these, and later samples overwrite the depth
+            vector.update(depth=read(targets.surface_depth, w, h)[..., 0], ids=read(targets.surface_id, w, h),
+                          view_segments=view_segments)
 
     stats = draw(scene, camera, settings, targets, gpu_meshes, each_sample, cancelled, view_batches,
-                 first_sample if wanted & {"depth", "normal"} else None)
+                 first_sample if wanted & {"depth", "normal"} or vector is not None else None)
     pixels = read(targets.result, w, h)
     scale = stats.samples_requested / stats.samples if 0 < stats.samples < stats.samples_requested else 1.0
     pixels *= scale  # cancelled: rescale what was accumulated

@@ -1,0 +1,160 @@
+"""SVG output of the ink lines: the scene setting (Render Properties -> EdgeLight Lines -> SVG
+Output), the file written beside each rendered frame, and the operator that exports a view.
+
+The SVG holds the lines the line pass drew, with the same visibility (vector_lines.py)."""
+import os
+import time
+
+import bpy
+
+from . import svg_write, vector_lines
+
+# A render-based export (the operator without a 3D view, e.g. headless) names its file here;
+# the engine writes it in place of the frame's path, once.
+_pending = {}
+_IMAGE_EXTENSIONS = {".png", ".jpg", ".jpeg", ".exr", ".tif", ".tiff", ".bmp", ".tga", ".hdr", ".jp2",
+                     ".webp", ".cin", ".dpx", ".rgb", ".sgi"}
+
+
+class EdgeLightSvgSettings(bpy.types.PropertyGroup):
+    enabled: bpy.props.BoolProperty(
+        name="SVG Output", default=False,
+        description="Write the visible ink lines of each rendered frame as an SVG file beside it "
+                    "(<output path>_####.svg), one layer per line type")
+
+
+def wanted(scene):
+    return bool(_pending) or scene.edgelight_svg.enabled
+
+
+def frame_svg_path(scene, layer=None):
+    """The frame's output path with .svg for the image extension (and the view layer's name
+    when the scene renders several)."""
+    path = scene.render.frame_path(frame=scene.frame_current)
+    root, ext = os.path.splitext(path)
+    if ext.lower() in _IMAGE_EXTENSIONS:
+        path = root
+    if layer and sum(1 for v in scene.view_layers if v.use) > 1:
+        path += "_" + bpy.path.clean_name(layer)
+    return bpy.path.abspath(path) + ".svg"
+
+
+def write(path, scene_data, camera, line_settings, vector):
+    """Writes the SVG of one frame; returns its size in bytes."""
+    instances = vector_lines.instances_of(scene_data, vector.get("view_segments"))
+    strokes = vector_lines.strokes(instances, line_settings, camera, vector["depth"], vector["ids"])
+    root = svg_write.document(strokes, line_settings, camera.width, camera.height)
+    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
+    svg_write.write(path, root)
+    return os.path.getsize(path)
+
+
+def write_render(scene, layer, scene_data, camera, line_settings, vector, record):
+    """The engine's hook after a frame: the frame's SVG (or the pending export's)."""
+    if line_settings is None or "depth" not in vector:
+        return
+    start = time.perf_counter()
+    path = _pending.pop("path", None) or frame_svg_path(scene, layer)
+    size = write(path, scene_data, camera, line_settings, vector)
+    # The record outlives the render only for tests (engine.capture).
+    record.update(svg=path, svg_bytes=size, svg_seconds=time.perf_counter() - start, vector=vector)
+
+
+def _view_camera(context):
+    """The 3D view's camera (frame.Camera) when it does not look through the scene camera."""
+    import numpy as np
+    from .passes import frame
+    rv3d, region = context.region_data, context.region
+    if rv3d is None or region is None or rv3d.view_perspective == 'CAMERA':
+        return None
+    view = np.array(rv3d.view_matrix, np.float64)
+    world = np.linalg.inv(view)
+    return frame.Camera(view=view, projection=np.array(rv3d.window_matrix, np.float64), eye=tuple(world[:3, 3]),
+                        view_dir=tuple(-world[:3, 2]), orthographic=not rv3d.is_perspective,
+                        width=region.width, height=region.height)
+
+
+class EDGELIGHT_OT_export_svg(bpy.types.Operator):
+    """Export the visible ink lines of this view as SVG (the 3D view's, or the scene camera's)"""
+    bl_idname = "edgelight.export_svg"
+    bl_label = "Export Lines as SVG"
+    filepath: bpy.props.StringProperty(subtype='FILE_PATH')
+    filter_glob: bpy.props.StringProperty(default="*.svg", options={'HIDDEN'})
+
+    def invoke(self, context, event):
+        if not self.filepath:
+            self.filepath = frame_svg_path(context.scene)
+        context.window_manager.fileselect_add(self)
+        return {'RUNNING_MODAL'}
+
+    def execute(self, context):
+        from . import lines
+        if lines.settings_of(context.scene.edgelight) is None:
+            self.report({'ERROR'}, "EdgeLight: no lines to export (turn on EdgeLight Lines)")
+            return {'CANCELLED'}
+        path = bpy.path.ensure_ext(bpy.path.abspath(self.filepath), ".svg")
+        camera = _view_camera(context)
+        if camera is None:
+            # The scene camera: one render writes it (a render has a GPU context even headless).
+            _pending["path"] = path
+            try:
+                bpy.ops.render.render()
+            finally:
+                _pending.clear()
+        else:
+            self._export_view(context, camera, path)
+        self.report({'INFO'}, f"EdgeLight: lines written to {path}")
+        return {'FINISHED'}
+
+    @staticmethod
+    def _export_view(context, camera, path):
+        from . import engine, lines, scene_sync
+        from .passes import frame
+        lib, error = engine.load_library()
+        if lib is None:
+            raise RuntimeError(f"EdgeLight: native library unavailable: {error}")
+        depsgraph = context.evaluated_depsgraph_get()
+        line_settings = lines.settings_of(context.scene.edgelight)
+        data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings)
+        vector = {}
+        frame.render(data, camera, frame.Settings(samples=1, highlights=False, lines=line_settings), vector=vector)
+        write(path, data, camera, line_settings, vector)
+
+
+class EDGELIGHT_PT_lines_svg(bpy.types.Panel):
+    bl_label = "SVG Output"
+    bl_space_type = 'PROPERTIES'
+    bl_region_type = 'WINDOW'
+    bl_context = "render"
+    bl_parent_id = "EDGELIGHT_PT_lines"
+    bl_options = {'DEFAULT_CLOSED'}
+
+    @classmethod
+    def poll(cls, context):
+        return context.engine == 'EDGELIGHT'
+
+    def draw_header(self, context):
+        self.layout.prop(context.scene.edgelight_svg, "enabled", text="")
+
+    def draw(self, context):
+        layout = self.layout
+        layout.active = context.scene.edgelight.use_lines
+        col = layout.column()
+        col.active = context.scene.edgelight_svg.enabled
+        col.label(text=bpy.path.basename(frame_svg_path(context.scene)), icon='FILE')
+        layout.operator(EDGELIGHT_OT_export_svg.bl_idname, icon='EXPORT')
+
+
+CLASSES = (EdgeLightSvgSettings, EDGELIGHT_OT_export_svg, EDGELIGHT_PT_lines_svg)
+
+
+def register():
+    for cls in CLASSES:
+        bpy.utils.register_class(cls)
+    bpy.types.Scene.edgelight_svg = bpy.props.PointerProperty(type=EdgeLightSvgSettings)
+
+
+def unregister():
+    del bpy.types.Scene.edgelight_svg
+    for cls in reversed(CLASSES):
+        bpy.utils.unregister_class(cls)

@@ -1,0 +1,218 @@
+"""Ink lines as vector polylines in pixel coordinates of the render (for the SVG output).
+
+Each segment is projected as the line pass's vertex shader does (shaders/line.vert.glsl),
+sampled every SAMPLE_PX pixels, and each sample's visibility decided by the line pass's rule
+(line_visibility.py). Runs of equal visibility and width are chained through shared ends into
+polylines, collinear points are dropped, and each polyline is simplified (Douglas-Peucker) to
+TOLERANCE_PX (which also merges collinear runs: their inner points lie on the line).
+"""
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import line_visibility
+
+SAMPLE_PX = 1.0      # visibility is decided once per this many pixels along a segment
+TOLERANCE_PX = 0.25  # Douglas-Peucker: no dropped point is farther than this from the polyline
+WIDTH_STEP_PX = 0.25  # tapered and scene-unit widths are stepped to multiples of this
+_NEAR = 1e-6         # clip w below which a point is behind the eye (as the vertex shader)
+
+
+@dataclass
+class Stroke:
+    """Polylines of one line type drawn alike: visible or hidden, one width (pixels)."""
+    hidden: bool
+    width: float
+    polylines: list = field(default_factory=list)   # (k, 2) arrays, x right, y down
+
+
+def project(seg, matrix, camera):
+    """Screen ends (N, 2) x2 (y up), view depths (N,) x2 and the kept parameter range [t0, t1]
+    of each segment, clipped to the part in front of the eye; `keep` marks those with one."""
+    m = np.asarray(matrix, np.float64)
+    vp = np.asarray(camera.view, np.float64) @ m
+    pr = np.asarray(camera.projection, np.float64)
+    ends = []
+    for p in (seg.p0, seg.p1):
+        h = np.c_[np.asarray(p, np.float64), np.ones(len(p))]
+        v = h @ vp.T
+        ends.append((v, v @ pr.T))
+    (v0, c0), (v1, c1) = ends
+    w0, w1 = c0[:, 3], c1[:, 3]
+    keep = (w0 >= _NEAR) | (w1 >= _NEAR)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        tc = (_NEAR - w0) / (w1 - w0)
+    t0 = np.where(w0 < _NEAR, tc, 0.0)
+    t1 = np.where(w1 < _NEAR, tc, 1.0)
+    size = np.array([camera.width, camera.height], np.float64)
+
+    def at(t):
+        c = c0 + t[:, None] * (c1 - c0)
+        z = -(v0[:, 2] + t * (v1[:, 2] - v0[:, 2]))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return (c[:, :2] / c[:, 3:4] * 0.5 + 0.5) * size, z
+    (sa, za), (sb, zb) = at(t0), at(t1)
+    return sa, sb, za, zb, t0, t1, keep
+
+
+def half_widths(style, z, taper_t, camera):
+    """The vertex shader's el_line_half_width, per end."""
+    w = np.full(len(z), style.width, np.float64)
+    if style.scene_units:
+        ppu = camera.px_per_unit / np.maximum(z, 1e-20) if not camera.orthographic else camera.px_per_unit
+        w = np.maximum(w * ppu, style.min_pixels)
+    f = np.clip(taper_t / style.taper, 0.0, 1.0) if style.taper > 0.0 else 1.0
+    return 0.5 * w * f
+
+
+def sample_runs(seg, matrix, instance_id, kind, style, camera, depth, ids):
+    """Runs of equal visibility and stepped width along each segment: (a, b, hidden, width)
+    arrays, a / b the run's ends in pixels (y up)."""
+    sa, sb, za, zb, t0, t1, keep = project(seg, matrix, camera)
+    taper = np.asarray(seg.taper, np.float64)
+    ta = taper[:, 0] + t0 * (taper[:, 1] - taper[:, 0])
+    tb = taper[:, 0] + t1 * (taper[:, 1] - taper[:, 0])
+    ra, rb = half_widths(style, za, ta, camera), half_widths(style, zb, tb, camera)
+    keep &= np.all(np.isfinite(sa), 1) & np.all(np.isfinite(sb), 1)
+    # Only what can reach the image.
+    size = np.array([camera.width, camera.height])
+    reach = np.maximum(ra, rb)[:, None] + 1.0
+    keep &= np.all(np.maximum(sa, sb) >= -reach, 1) & np.all(np.minimum(sa, sb) <= size + reach, 1)
+    idx = np.flatnonzero(keep)
+    empty = np.zeros((0, 2)), np.zeros((0, 2)), np.zeros(0, bool), np.zeros(0)
+    if len(idx) == 0:
+        return empty
+    sa, sb, za, zb, ra, rb = sa[idx], sb[idx], za[idx], zb[idx], ra[idx], rb[idx]
+    faces = (seg.faces if seg.faces is not None else np.zeros((len(seg), 2), np.float32))[idx]
+    n = np.maximum(1, np.ceil(np.linalg.norm(sb - sa, axis=1) / SAMPLE_PX)).astype(np.int64)
+    s = np.repeat(np.arange(len(idx)), n)                       # segment of each piece
+    k = np.arange(len(s)) - np.repeat(np.cumsum(n) - n, n)       # piece within its segment
+    nn = n[s].astype(np.float64)
+    t = (k + 0.5) / nn                                           # the piece's centre
+    c = sa[s] + t[:, None] * (sb[s] - sa[s])
+    if camera.orthographic:
+        z = za[s] + t * (zb[s] - za[s])
+    else:
+        z = 1.0 / (1.0 / za[s] + t * (1.0 / zb[s] - 1.0 / za[s]))
+    vis = line_visibility.visible(c, z, faces[s], instance_id, kind in line_visibility.OUTLINE_TYPES,
+                                  depth, ids, camera.px_per_unit, not camera.orthographic)
+    width = np.round(2.0 * (ra[s] + t * (rb[s] - ra[s])) / WIDTH_STEP_PX) * WIDTH_STEP_PX
+    # A run starts where the segment, the visibility or the width changes.
+    start = np.ones(len(s), bool)
+    start[1:] = (s[1:] != s[:-1]) | (vis[1:] != vis[:-1]) | (width[1:] != width[:-1])
+    first = np.flatnonzero(start)
+    last = np.r_[first[1:], len(s)] - 1
+    rs = s[first]
+    a = sa[rs] + (k[first] / nn[first])[:, None] * (sb[rs] - sa[rs])
+    b = sa[rs] + ((k[last] + 1) / nn[last])[:, None] * (sb[rs] - sa[rs])
+    return a, b, ~vis[first], width[first]
+
+
+def chain(a, b):
+    """Runs (a[i] -> b[i]) joined where exactly two meet at one point: a list of index paths
+    (arrays of points)."""
+    if len(a) == 0:
+        return []
+    pts = np.r_[a, b]
+    key = np.round(pts * 1024.0).astype(np.int64)
+    _, node = np.unique(key, axis=0, return_inverse=True)
+    node = node.reshape(-1)
+    na, nb = node[:len(a)], node[len(a):]
+    degree = np.bincount(np.r_[na, nb], minlength=node.max() + 1)
+    adj = {}
+    for i, (u, v) in enumerate(zip(na.tolist(), nb.tolist())):
+        adj.setdefault(u, []).append(i)
+        adj.setdefault(v, []).append(i)
+    used = np.zeros(len(a), bool)
+    node_pt = np.zeros((len(degree), 2))
+    node_pt[node] = pts
+    out = []
+
+    def walk(i, at):
+        path = [at]
+        while True:
+            used[i] = True
+            u, v = int(na[i]), int(nb[i])
+            at = v if at == u else u
+            path.append(at)
+            if degree[at] != 2:
+                return path
+            nxt = [j for j in adj[at] if not used[j]]
+            if not nxt:
+                return path
+            i = nxt[0]
+
+    for start in np.flatnonzero(degree != 2).tolist():   # open chains from their ends
+        for i in adj.get(start, ()):
+            if not used[i]:
+                out.append(node_pt[walk(i, start)])
+    for i in np.flatnonzero(~used).tolist():            # what is left is closed loops
+        if not used[i]:
+            out.append(node_pt[walk(i, int(na[i]))])
+    return out
+
+
+def simplify(p, tol=TOLERANCE_PX):
+    """Douglas-Peucker on a polyline (k, 2): the kept points."""
+    if len(p) <= 2:
+        return p
+    keep = np.zeros(len(p), bool)
+    keep[0] = keep[-1] = True
+    stack = [(0, len(p) - 1)]
+    while stack:
+        i, j = stack.pop()
+        if j <= i + 1:
+            continue
+        a, b = p[i], p[j]
+        d = b - a
+        q = p[i + 1:j] - a
+        ll = float(d @ d)
+        if ll > 1e-12:
+            dist = np.abs(q[:, 0] * d[1] - q[:, 1] * d[0]) / np.sqrt(ll)
+        else:
+            dist = np.linalg.norm(q, axis=1)
+        m = int(np.argmax(dist))
+        if dist[m] > tol:
+            keep[i + 1 + m] = True
+            stack += [(i, i + 1 + m), (i + 1 + m, j)]
+    return p[keep]
+
+
+def strokes(instances, settings, camera, depth, ids):
+    """type -> [Stroke] for the drawn types of `settings` (LineSettings).
+
+    instances: [(matrix, {type: LineSegments}, instance id)]; depth / ids: the first sample's
+    surface_depth and surface_id as read back. Hidden runs are kept only when hidden lines are
+    drawn (dimmed). Coordinates are flipped to SVG's (y down)."""
+    out = {}
+    for kind, style in settings.styles:
+        parts = [sample_runs(segs[kind], matrix, iid, kind, style, camera, depth, ids)
+                 for matrix, segs, iid in instances if kind in segs and len(segs[kind])]
+        if not parts:
+            continue
+        a, b, hidden, width = (np.concatenate(x) for x in zip(*parts))
+        wanted = (width > 0.0) & (~hidden | (settings.hidden_opacity > 0.0))
+        groups = []
+        for h, w in sorted(set(zip(hidden[wanted].tolist(), width[wanted].tolist()))):
+            sel = wanted & (hidden == h) & (width == w)
+            st = Stroke(h, w)
+            for poly in chain(a[sel], b[sel]):
+                poly = np.c_[poly[:, 0], camera.height - poly[:, 1]]
+                st.polylines.append(simplify(poly))
+            groups.append(st)
+        if groups:
+            out[kind] = groups
+    return out
+
+
+def instances_of(scene, view_segments):
+    """[(matrix, {type: LineSegments}, instance id)] of a frame: each instance's static line sets
+    and its view-dependent ones (frame.view_line_segments)."""
+    out = []
+    for i, inst in enumerate(scene.instances):
+        segs = dict(inst.mesh.lines)
+        if view_segments and i < len(view_segments) and view_segments[i]:
+            segs.update(view_segments[i])
+        out.append((inst.matrix, segs, i + 1))
+    return out
+

@@ -1,0 +1,260 @@
+"""SVG output of the ink lines (svg_output.py): the file validates as SVG 1.1 with one layer per
+line type, rasterised by a real SVG renderer (librsvg's rsvg-convert) its ink matches the
+rendered line pass, and its visibility is the line pass's own rule (line_visibility.py)."""
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+import xml.etree.ElementTree as ET
+
+import bpy
+import numpy as np
+
+import helpers
+from test_line_visibility import off_part, tube
+
+SVG_NS = "http://www.w3.org/2000/svg"
+INKSCAPE_NS = "http://www.inkscape.org/namespaces/inkscape"
+MATCH_MIN = 0.97     # recall and precision of the SVG's ink against the line pass, within 1 px
+INK = 0.25           # alpha above which a pixel counts as ink, in both images
+TYPES = {"silhouette", "border", "crease", "contour", "material", "marked", "wire"}
+
+
+def render_svg(scene, name="frame_"):
+    """Renders with SVG output on; returns (record, path of the SVG)."""
+    out = tempfile.mkdtemp(prefix="edgelight_svg_")
+    scene.render.filepath = os.path.join(out, name)
+    scene.edgelight_svg.enabled = True
+    rec = helpers.render()
+    return rec, rec["svg"]
+
+
+def rasterise(path, width, height):
+    """(h, w) alpha of the SVG drawn by rsvg-convert, row 0 at the bottom (as the passes)."""
+    exe = shutil.which("rsvg-convert")
+    if exe is None:
+        raise unittest.SkipTest("rsvg-convert missing (librsvg2-bin, scripts/setup.sh installs it)")
+    png = path[:-4] + ".png"
+    subprocess.run([exe, "-w", str(width), "-h", str(height), "-o", png, path], check=True)
+    img = bpy.data.images.load(png)
+    try:
+        px = np.zeros(width * height * 4, np.float32)
+        img.pixels.foreach_get(px)
+    finally:
+        bpy.data.images.remove(img)
+    return px.reshape(height, width, 4)[..., 3]
+
+
+def near(mask):
+    """Pixels within 1 px (3 x 3) of the mask."""
+    p = np.pad(mask, 1)
+    h, w = mask.shape
+    return np.any([p[1 + dy:1 + dy + h, 1 + dx:1 + dx + w] for dy in (-1, 0, 1) for dx in (-1, 0, 1)], axis=0)
+
+
+def ink_match(rec, path):
+    lines = rec["lines"][..., 3] > INK
+    h, w = lines.shape
+    svg = rasterise(path, w, h) > INK
+    recall = float((lines & near(svg)).sum() / max(lines.sum(), 1))
+    precision = float((svg & near(lines)).sum() / max(svg.sum(), 1))
+    return recall, precision, int(lines.sum())
+
+
+class Document(unittest.TestCase):
+    def test_svg_1_1_with_a_layer_per_type(self):
+        helpers.needs_gpu()
+        scene = helpers.open_sample("toon")
+        scene.edgelight.hidden_lines = 'DIMMED'
+        rec, path = render_svg(scene)
+        w, h = rec["camera"].width, rec["camera"].height
+        root = ET.parse(path).getroot()
+        self.assertEqual(root.tag, f"{{{SVG_NS}}}svg")
+        self.assertEqual(root.get("version"), "1.1")
+        self.assertEqual(root.get("viewBox"), f"0 0 {w} {h}")
+        self.assertEqual((root.get("width"), root.get("height")), (str(w), str(h)))
+        layers = root.findall(f"{{{SVG_NS}}}g")
+        ids = [g.get("id") for g in layers]
+        self.assertIn("silhouette", ids)
+        self.assertTrue(any(i.endswith("-hidden") for i in ids), ids)   # dimmed: hidden in their own layers
+        self.assertEqual(len(set(ids)), len(ids))
+        for g in layers:
+            self.assertIn(g.get("id").replace("-hidden", ""), TYPES)
+            self.assertEqual(g.get(f"{{{INKSCAPE_NS}}}groupmode"), "layer")
+            self.assertTrue(g.get(f"{{{INKSCAPE_NS}}}label"))
+            self.assertRegex(g.get("stroke"), r"^#[0-9a-f]{6}$")
+            self.assertEqual(g.get("fill"), "none")
+            self.assertTrue(0.0 < float(g.get("opacity")) <= 1.0)
+            polys = list(g)
+            self.assertTrue(polys)
+            for p in polys:
+                self.assertEqual(p.tag, f"{{{SVG_NS}}}polyline")
+                self.assertGreater(float(p.get("stroke-width") or g.get("stroke-width")), 0.0)
+                xy = np.array([v.split(",") for v in p.get("points").split()], float)
+                self.assertGreaterEqual(len(xy), 2)
+                self.assertTrue(np.all(np.isfinite(xy)))
+        print(f"svg toon: {os.path.getsize(path)} bytes, {sum(len(g) for g in layers)} polylines")
+
+    def test_written_beside_the_frame(self):
+        helpers.needs_gpu()
+        scene = helpers.open_sample("cube")
+        scene.edgelight.use_lines = True
+        scene.frame_current = 7
+        rec, path = render_svg(scene, "shot_")
+        self.assertEqual(os.path.basename(path), "shot_0007.svg")
+        self.assertTrue(os.path.exists(path))
+
+    def test_export_operator_with_the_scene_camera(self):
+        helpers.needs_gpu()
+        scene = helpers.open_sample("cube")
+        scene.edgelight.use_lines = True
+        path = os.path.join(tempfile.mkdtemp(prefix="edgelight_svg_"), "export.svg")
+        helpers.addon().engine.capture = True
+        bpy.ops.edgelight.export_svg(filepath=path)
+        self.assertEqual(ET.parse(path).getroot().tag, f"{{{SVG_NS}}}svg")
+        self.assertFalse(os.path.exists(scene.render.frame_path(frame=scene.frame_current)[:-4] + ".svg"))
+
+
+    def test_blender_b_a_writes_one_svg_per_frame(self):
+        """`blender -b -a` (what a farm runs): each frame's PNG gets its SVG beside it."""
+        helpers.needs_gpu()
+        if helpers.is_module_build():
+            self.skipTest("PyPI's bpy has no `blender -b -a`; the in-process render tests cover the same code")
+        scene = helpers.open_sample("cube")
+        scene.edgelight.use_lines = True
+        scene.edgelight_svg.enabled = True
+        scene.frame_start, scene.frame_end = 1, 2
+        with tempfile.TemporaryDirectory() as tmp:
+            blend = os.path.join(tmp, "anim.blend")
+            scene.render.filepath = os.path.join(tmp, "out_")
+            bpy.ops.wm.save_as_mainfile(filepath=blend, copy=True)
+            run = subprocess.run([bpy.app.binary_path, "-b", "--factory-startup", "--addons", helpers.MODULE,
+                                  blend, "-a"], capture_output=True, text=True, timeout=300)
+            self.assertEqual(run.returncode, 0, run.stdout[-2000:])
+            self.assertEqual(sorted(f for f in os.listdir(tmp) if f.startswith("out_")),
+                             ["out_0001.png", "out_0001.svg", "out_0002.png", "out_0002.svg"])
+
+
+class InkMatchesLinePass(unittest.TestCase):
+    """The SVG rasterised by librsvg against the rendered line pass: recall (line-pass ink with
+    SVG ink within 1 px) and precision (SVG ink with line-pass ink within 1 px)."""
+
+    def check(self, rec, path, label):
+        recall, precision, n = ink_match(rec, path)
+        print(f"svg {label}: recall {recall:.4f} precision {precision:.4f} ({n} ink px), "
+              f"{os.path.getsize(path)} bytes, {rec['svg_seconds'] * 1000:.0f} ms")
+        self.assertGreater(n, 100, label)
+        self.assertGreaterEqual(recall, MATCH_MIN, label)
+        self.assertGreaterEqual(precision, MATCH_MIN, label)
+
+    def test_samples(self):
+        helpers.needs_gpu()
+        for name in ("cube", "fandisk", "prop", "toon"):
+            scene = helpers.open_sample(name)
+            scene.edgelight.use_lines = True
+            rec, path = render_svg(scene)
+            self.check(rec, path, name)
+
+    def test_tapered_lines_in_stepped_widths(self):
+        """Taper: each run of one width (0.25 px steps) is a polyline with its own stroke-width."""
+        helpers.needs_gpu()
+        scene = helpers.open_sample("toon")
+        scene.edgelight.use_lines = True
+        for kind in ("silhouette", "crease", "border"):
+            style = getattr(scene.edgelight, "line_" + kind)
+            style.unit, style.width, style.taper = 'PIXELS', 3.0, 0.5
+        rec, path = render_svg(scene)
+        layer = ET.parse(path).getroot().find(f"{{{SVG_NS}}}g[@id='silhouette']")
+        widths = {float(p.get("stroke-width")) for p in layer}
+        self.assertGreaterEqual(len(widths), 4, widths)
+        self.assertLessEqual(max(widths), 3.0)
+        self.check(rec, path, "toon tapered")
+
+    def test_meshes(self):
+        helpers.needs_gpu()
+        for name, eye in (("fandisk", (2.4, -3.0, 2.2)), ("cow", (2.6, -3.2, 1.6)),
+                          ("armadillo", (0.5, -3.6, 1.0)), ("bunny00", (0.8, -3.4, 1.2))):
+            scene = helpers.empty_scene(640, 480, highlights=False)
+            helpers.add_camera(eye, lens=50.0)
+            helpers.add_sun()
+            off_part(name)
+            helpers.only_lines(scene, silhouette=2.0, crease=1.5, border=1.5, contour=1.5)
+            rec, path = render_svg(scene)
+            self.check(rec, path, name)
+
+
+class VisibilityMirrorsLinePass(unittest.TestCase):
+    """line_visibility.visible against the line pass itself: at each pixel a segment's stroke
+    covers, the fragment shader decides at the closest point of the segment; the CPU rule at the
+    same point must give ink exactly where the pass drew it (hidden lines off). A hidden point
+    may still have ink from another stroke over the same pixel: a few at junctions."""
+
+    def agreement(self, rec):
+        """(visible samples, of them inked, hidden samples away from visible ones, of them inked)."""
+        a = helpers.addon()
+        vl, vis = a.vector_lines, a.line_visibility
+        cam, vec = rec["camera"], rec["vector"]
+        alpha = rec["lines"][..., 3]
+        h, w = alpha.shape
+        settings = a.lines.settings_of(bpy.context.scene.edgelight)
+        pixels, decided = [], []
+        for matrix, segs, iid in vl.instances_of(rec["scene"], vec["view_segments"]):
+            for kind in settings.types:
+                seg = segs.get(kind)
+                if seg is None or len(seg) == 0:
+                    continue
+                sa, sb, za, zb, t0, t1, keep = vl.project(seg, matrix, cam)
+                keep &= (t0 == 0.0) & (t1 == 1.0)
+                n = np.maximum(1, np.ceil(np.linalg.norm(sb - sa, axis=1))).astype(int)
+                s = np.repeat(np.flatnonzero(keep), n[keep])
+                k = np.arange(len(s)) - np.repeat(np.cumsum(n[keep]) - n[keep], n[keep])
+                c = sa[s] + ((k + 0.5) / n[s])[:, None] * (sb[s] - sa[s])
+                pix = np.floor(c)
+                inside = np.all((pix >= 0) & (pix < [w, h]), axis=1)
+                s, pix = s[inside], pix[inside].astype(int)
+                p = pix + 0.5  # the fragment's pixel centre and its closest point on the segment
+                ab = sb[s] - sa[s]
+                l2 = np.maximum((ab * ab).sum(1), 1e-12)
+                t = np.clip(((p - sa[s]) * ab).sum(1) / l2, 0.0, 1.0)
+                q = sa[s] + t[:, None] * ab
+                z = 1.0 / (1.0 / za[s] + t * (1.0 / zb[s] - 1.0 / za[s]))
+                pixels.append(pix)
+                decided.append(vis.visible(q, z, seg.faces[s], iid, kind in vis.OUTLINE_TYPES, vec["depth"],
+                                           vec["ids"], cam.px_per_unit, True))
+        pix, v = np.concatenate(pixels), np.concatenate(decided)
+        ink = alpha[pix[:, 1], pix[:, 0]] > 0.0
+        # A hidden sample's pixel may carry another, visible stroke: only those 1 px or more
+        # from every visible sample are compared.
+        shown_at = np.zeros((h, w), bool)
+        shown_at[pix[v, 1], pix[v, 0]] = True
+        alone = ~v & ~near(shown_at)[pix[:, 1], pix[:, 0]]
+        return int(v.sum()), int((v & ink).sum()), int(alone.sum()), int((alone & ink).sum())
+
+    def check(self, label):
+        scene = bpy.context.scene
+        for kind in ("silhouette", "border", "crease", "contour", "material", "marked"):
+            style = getattr(scene.edgelight, "line_" + kind)
+            style.width, style.taper, style.unit = 0.5, 0.0, 'PIXELS'  # thin: few pixels that two strokes share
+        scene.edgelight.hidden_lines = 'OFF'
+        rec, _ = render_svg(scene)
+        shown, shown_ink, hidden, hidden_ink = self.agreement(rec)
+        print(f"visibility mirror {label}: {shown_ink}/{shown} visible samples inked, "
+              f"{hidden_ink}/{hidden} hidden samples (away from visible ones) inked")
+        self.assertGreater(hidden, 50, label)  # the scene tests hidden lines
+        self.assertGreaterEqual(shown_ink / shown, 0.999, label)
+        self.assertLessEqual(hidden_ink / hidden, 0.001, label)
+
+    def test_toon_sample(self):
+        helpers.needs_gpu()
+        helpers.open_sample("toon").edgelight.use_lines = True
+        self.check("toon")
+
+    def test_hollow_tube_at_a_grazing_angle(self):
+        helpers.needs_gpu()
+        scene = helpers.empty_scene(480, 360, highlights=False)
+        helpers.add_camera((5.0, -2.0, 0.6), (0.0, 0.0, 0.8))
+        helpers.add_sun()
+        tube("Tube", wall=0.02)
+        helpers.only_lines(scene, silhouette=2.0, crease=2.0, border=2.0)
+        self.check("hollow tube")
