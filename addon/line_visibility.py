@@ -26,17 +26,21 @@ def visible(c, z, faces, instance_id, outline, depth, ids, px_per_unit, perspect
     inst = np.broadcast_to(np.asarray(instance_id, np.float32), (n,))
     outline = np.broadcast_to(np.asarray(outline, bool), (n,))
     q = np.floor(c).astype(np.int64)
-    inv_far = np.full(n, 3.0e38, np.float32)
+    yc, xc = np.clip(q[:, 1], 0, h - 1), np.clip(q[:, 0], 0, w - 1)
+    id_c = ids[yc, xc, :2]
+    inv_c = depth[yc, xc]
+    # The farthest of the 3x3 pixels that show something other than the centre pixel's face.
+    inv_other = inv_c.copy()
     own = np.zeros(n, bool)
     for dy in (-1, 0, 1):
         y = np.clip(q[:, 1] + dy, 0, h - 1)
         for dx in (-1, 0, 1):
             x = np.clip(q[:, 0] + dx, 0, w - 1)
-            inv_far = np.minimum(inv_far, depth[y, x])
             fid = ids[y, x, 1]
             own |= (ids[y, x, 0] == inst) & (fid > 0.0) & ((fid == faces[:, 0]) | (fid == faces[:, 1]))
-    centre = depth[np.clip(q[:, 1], 0, h - 1), np.clip(q[:, 0], 0, w - 1)]
-    inv_shown = np.where(outline, inv_far, centre)
+            other = np.any(ids[y, x, :2] != id_c, axis=1)
+            inv_other = np.where(other, np.minimum(inv_other, depth[y, x]), inv_other)
+    inv_shown = np.where(outline, inv_other, inv_c)
     world_per_px = (z if perspective else np.float32(1.0)) / np.float32(px_per_unit)
     bias = np.float32(0.5) * world_per_px + np.float32(REL_BIAS) * np.abs(z)
     with np.errstate(divide="ignore"):

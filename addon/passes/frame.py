@@ -274,12 +274,12 @@ def draw_composite(targets, background, full_screen, weight):
         gpu.state.blend_set('NONE')
 
 
-def read(texture, width, height):
-    buf = gpu.types.Buffer('FLOAT', width * height * 4)
+def read(texture, width, height, channels=4):
+    buf = gpu.types.Buffer('FLOAT', width * height * channels)
     fb = gpu.types.GPUFrameBuffer(color_slots=(texture,))
     with fb.bind():
-        fb.read_color(0, 0, width, height, 4, 0, 'FLOAT', data=buf)
-    return np.asarray(buf, dtype=np.float32).reshape(height, width, 4)
+        fb.read_color(0, 0, width, height, channels, 0, 'FLOAT', data=buf)
+    return np.asarray(buf, dtype=np.float32).reshape(height, width, channels)
 
 
 def line_instances(scene, gpu_meshes, view_batches):
@@ -435,13 +435,14 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None, pa
         for name, texture in (("depth", targets.surface_depth), ("normal", targets.normal)):
             if name in wanted:
                 passes[name] = read(texture, w, h)
-        if vector is not None:  # the line pass reads these, and later samples overwrite the depth
-            vector.update(depth=read(targets.surface_depth, w, h)[..., 0], ids=read(targets.surface_id, w, h),
-                          view_segments=view_segments)
+        if vector is not None:  # what the line pass reads; later samples overwrite the depth
+            vector.update(depth=read(targets.surface_depth, w, h, 1)[..., 0], view_segments=view_segments)
 
     stats = draw(scene, camera, settings, targets, gpu_meshes, each_sample, cancelled, view_batches,
                  first_sample if wanted & {"depth", "normal"} or vector is not None else None)
     pixels = read(targets.result, w, h)
+    if vector is not None:  # only the first sample writes ids: still the line pass's
+        vector["ids"] = read(targets.surface_id, w, h, 2)
     scale = stats.samples_requested / stats.samples if 0 < stats.samples < stats.samples_requested else 1.0
     pixels *= scale  # cancelled: rescale what was accumulated
     if "surface" in wanted:
