@@ -293,6 +293,21 @@ def steps():
     bpy.data.objects.remove(host)
     bpy.data.objects.remove(tile)
 
+    # SVG export of the 3D view's own lines (not the scene camera's): the operator in the view.
+    region.data.view_perspective = 'PERSP'
+    svg_path = os.path.join(OUT, "view_lines.svg")
+    with bpy.context.temp_override(window=window, area=area, region=region):
+        bpy.ops.edgelight.export_svg(filepath=svg_path)
+    import xml.etree.ElementTree as ET
+    ok, detail = False, "no file"
+    if os.path.exists(svg_path):
+        root = ET.parse(svg_path).getroot()
+        strokes = [e for e in root.iter() if e.tag.endswith(("polyline", "path", "line"))]
+        view_box = root.get("viewBox", "")
+        ok = len(strokes) > 0 and view_box.split()[2:] == [str(region.width), str(region.height)]
+        detail = f"{len(strokes)} strokes, viewBox {view_box}, view {region.width} x {region.height}"
+    check("SVG: the operator exports the 3D view's visible lines at the view's size", ok, detail)
+
     # 8. Blender's own panels in the Properties editor: the Material, Light and World tabs show
     # the panels whose settings EdgeLight honours (their poll passes in that editor) and not
     # EEVEE's that it ignores; each tab is drawn and captured.
