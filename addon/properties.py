@@ -31,7 +31,8 @@ class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
     radius: bpy.props.FloatProperty(
         update=_tag, name="Radius", default=0.01, min=0.0, soft_max=0.1, unit='LENGTH', precision=4,
         description="Bevel radius in the object's local units, scaled with the object, like the Bevel "
-                    "modifier's Amount")
+                    "modifier's Amount. Each edge takes at most what its faces allow (as Bevel's Clamp "
+                    "Overlap): half its narrower face's width over tan(half the angle between the faces)")
     tint: bpy.props.FloatVectorProperty(
         update=_tag, name="Highlight Tint", subtype='COLOR', size=3, default=(1.0, 1.0, 1.0), min=0.0, soft_max=1.0,
         description="Multiplies the specular part of the edge highlight")
