@@ -9,6 +9,15 @@ from .passes.line_pass import OUTLINE_TYPES, REL_BIAS
 __all__ = ("visible", "OUTLINE_TYPES")
 
 
+def clipped(z, projection):
+    """Which points at view depth z lie outside the camera's clip range (line.frag.glsl's
+    first test: |clip z| > clip w)."""
+    p = np.asarray(projection, np.float64)
+    zv = -np.asarray(z, np.float64)
+    cz, cw = p[2, 2] * zv + p[2, 3], p[3, 2] * zv + p[3, 3]
+    return np.abs(cz) > cw
+
+
 def visible(c, z, faces, instance_id, outline, depth, ids, px_per_unit, perspective):
     """Which centre points of lines are visible.
 

@@ -181,12 +181,16 @@ def view_lines(extract, index, matrix, camera, settings, counters=None):
         out["silhouette"] = _edge_segments(d, extract.native, selected, settings.style("silhouette").taper > 0.0)
     if "contour" in kinds:
         pts, tris = views.contours()
+        # Not across flat-shaded faces: their shading has no contour (the library interpolates
+        # vertex normals everywhere).
+        smooth = getattr(extract, "smooth_faces", None)
+        keep = smooth[tris] if smooth is not None and len(tris) else np.ones(len(tris), bool)
         fn = extract.face_normals()[tris] if len(tris) else np.zeros((0, 3), np.float32)
         if settings.style("contour").taper > 0.0 and len(tris):
             t = taper_params(*views.contour_chains())
         else:
             t = np.full((len(tris), 2), NO_TAPER, np.float32)
         faces = np.stack([tris, tris], axis=1) if len(tris) else np.zeros((0, 2), np.int64)
-        out["contour"] = LineSegments(np.ascontiguousarray(pts[:, 0]), np.ascontiguousarray(pts[:, 1]), fn, fn, t,
-                                      surface_ids(d, faces))
+        out["contour"] = LineSegments(np.ascontiguousarray(pts[keep, 0]), np.ascontiguousarray(pts[keep, 1]),
+                                      fn[keep], fn[keep], t[keep], surface_ids(d, faces[keep]))
     return out

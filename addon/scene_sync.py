@@ -3,8 +3,8 @@
 Reads with foreach_get into numpy; hands topology to the native library for classification.
 Never draws, never modifies the user's data (evaluated meshes are temporary copies).
 """
-from dataclasses import dataclass, field
 import math
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -44,6 +44,7 @@ class MeshExtract:
     lines_key: object = None                    # the LineSettings.static_key() of `lines`
     views: dict = field(default_factory=dict)   # instance index -> native.View
     _face_normals: object = None
+    smooth_faces: np.ndarray = None             # per triangle: shaded smooth (a corner normal not the face's)
 
     def notes(self):
         """Report lines about this geometry: what was drawn differently from the file and why."""
@@ -189,6 +190,9 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     polygons = radius_clamp.Polygons(_foreach(mesh.polygons, "loop_start", np.int64),
                                      _foreach(mesh.polygons, "loop_total", np.int64),
                                      _foreach(mesh.loops, "vertex_index", np.int64), tri_poly)
+    # Smooth contours exist only where the surface is shaded smooth: a flat face has one normal.
+    nor = out.corner_nor.reshape(-1, 3, 3)
+    out.smooth_faces = np.any(np.einsum("tck,tk->tc", nor, tri_normals) < 1.0 - 1e-5, axis=1)
     out.edge_data = EdgeData(m.edge_flags(), m.edge_angles(), m.edge_normals(), edges, positions,
                              *_first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id, polygons)
     out.edges = choose_edges(out.edge_data, shading)
@@ -313,13 +317,20 @@ _TYPE_NAMES = {'VOLUME': "volume", 'POINTCLOUD': "point cloud", 'CURVES': "hair 
                'GPENCIL': "grease pencil", 'GREASEPENCIL': "grease pencil"}
 
 
-def geometry_key(ob):
+def object_materials(ob, override=None):
+    """The material of each slot, or the view layer's Material Override in every slot (as Cycles
+    renders a layer with one)."""
+    slots = [slot.material for slot in ob.material_slots]
+    return [override] * max(1, len(slots)) if override is not None else slots
+
+
+def geometry_key(ob, materials):
     """What an instance draws: its evaluated geometry and its materials. Instances of one
     geometry (Geometry Nodes, collection and particle instances, linked duplicates) share one
     key, so one extraction and one native mesh serve all of them; instances carry their host's
     name, so a name would not do."""
     data = ob.data
-    materials = tuple(slot.material.name_full if slot.material else "" for slot in ob.material_slots)
+    materials = tuple(m.name_full if m else "" for m in materials)
     if ob.type == 'MESH' and data is not None:
         return ('MESH', data.as_pointer(), materials)
     # Curves, text, surfaces and metaballs become meshes per object (to_mesh).
@@ -350,11 +361,12 @@ def not_drawn_note(not_drawn):
 
 def walk_instances(depsgraph, lookup):
     """Every drawn instance of the evaluated scene, with the extraction `lookup` gives its
-    geometry. lookup(key, ob, label, owners) runs while the temporary instance object is valid
+    geometry. lookup(key, ob, inst, materials) runs while the temporary instance object is valid
     (only inside the depsgraph's iteration) and returns a MeshExtract or None.
 
     Returns (instances, lights, not_drawn: {label: type name})."""
     instances, lights, not_drawn = [], [], {}
+    override = getattr(depsgraph.view_layer, "material_override", None)
     for inst in depsgraph.object_instances:
         ob = inst.object
         if ob.type == 'LIGHT':
@@ -366,13 +378,14 @@ def walk_instances(depsgraph, lookup):
             if ob.type not in _SILENT_TYPES:
                 not_drawn[instance_label(inst)] = _TYPE_NAMES.get(ob.type, ob.type.lower())
             continue
-        extract = lookup(geometry_key(ob), ob, inst)
+        materials = object_materials(ob, override)
+        extract = lookup(geometry_key(ob, materials), ob, inst, materials)
         if extract is not None:
             instances.append(Instance(extract, np.array(inst.matrix_world, dtype=np.float32)))
     return instances, lights, not_drawn
 
 
-def read_object(ob, label, lib=None, line_settings=None):
+def read_object(ob, label, materials, lib=None, line_settings=None):
     """The extraction of one evaluated object (raises SkipObject), or None when it has no
     geometry at all (a Geometry Nodes host whose output is only instances)."""
     mesh = None
@@ -380,7 +393,6 @@ def read_object(ob, label, lib=None, line_settings=None):
         mesh = ob.to_mesh()
         if mesh is None or len(mesh.vertices) == 0:
             return None
-        materials = [slot.material for slot in ob.material_slots]
         return extract_mesh(label, mesh, materials, lib=lib, line_settings=line_settings)
     finally:
         if mesh is not None:
@@ -391,11 +403,12 @@ def collect(depsgraph, lib=None, line_settings=None):
     """Everything visible in the evaluated scene. Objects that fail are reported and skipped."""
     reports, extracted = [], {}
 
-    def lookup(key, ob, inst):
+    def lookup(key, ob, inst, materials):
         if key not in extracted:
             extracted[key] = None
             try:
-                extracted[key] = read_object(ob, instance_label(inst), lib=lib, line_settings=line_settings)
+                extracted[key] = read_object(ob, instance_label(inst), materials, lib=lib,
+                                             line_settings=line_settings)
             except SkipObject as e:
                 reports.append(str(e))
             if extracted[key] is not None:

@@ -97,11 +97,15 @@ def sample_runs(seg, matrix, instance_id, kind, style, camera, depth, ids):
     vis = line_visibility.visible(c, z, faces[s], instance_id, kind in line_visibility.OUTLINE_TYPES,
                                   depth, ids, camera.px_per_unit, not camera.orthographic)
     width = np.round(2.0 * (ra[s] + t * (rb[s] - ra[s])) / WIDTH_STEP_PX) * WIDTH_STEP_PX
-    # A run starts where the segment, the visibility or the width changes.
+    clipped = line_visibility.clipped(z, camera.projection)
+    # A run starts where the segment, the visibility, the width or the clipping changes.
     start = np.ones(len(s), bool)
-    start[1:] = (s[1:] != s[:-1]) | (vis[1:] != vis[:-1]) | (width[1:] != width[:-1])
+    start[1:] = ((s[1:] != s[:-1]) | (vis[1:] != vis[:-1]) | (width[1:] != width[:-1])
+                 | (clipped[1:] != clipped[:-1]))
     first = np.flatnonzero(start)
     last = np.r_[first[1:], len(s)] - 1
+    inside = ~clipped[first]  # outside the camera's clip range a line is not drawn at all
+    first, last = first[inside], last[inside]
     rs = s[first]
     a = sa[rs] + (k[first] / nn[first])[:, None] * (sb[rs] - sa[rs])
     b = sa[rs] + ((k[last] + 1) / nn[last])[:, None] * (sb[rs] - sa[rs])

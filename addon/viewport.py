@@ -6,13 +6,13 @@ matrices; material -> shading (and the edge batch of an object whose chosen edge
 -> culling counts and a redraw; nothing -> the last image is drawn again, with no native call,
 no upload and no pass.
 """
-from dataclasses import dataclass
 import time
+from dataclasses import dataclass
 
 import bpy
 import numpy as np
 
-from . import lines, native, scene_sync
+from . import lines, scene_sync
 from .materials import shading_of
 from .passes import batches, frame, line_pass, toon
 
@@ -92,16 +92,16 @@ class ViewportState:
         stale = {k for k, owners in self.owners.items() if geometry.intersection(owners)}
         seen, reshaded = set(), set()
 
-        def lookup(cache_key, ob, inst):
+        def lookup(cache_key, ob, inst, materials):
             if cache_key not in seen:
                 seen.add(cache_key)
                 cache = self.objects.get(cache_key, False)
                 if cache is False or cache_key in stale:
-                    self.objects[cache_key] = self._extract(ob, inst, lib)
+                    self.objects[cache_key] = self._extract(ob, inst, materials, lib)
                     self.owners[cache_key] = scene_sync.instance_owners(inst)
                 elif shading and cache is not None and cache_key not in reshaded:
                     reshaded.add(cache_key)
-                    self._reshade(ob, cache)
+                    self._reshade(cache, materials)
             cache = self.objects[cache_key]
             if cache is None:
                 return None
@@ -130,11 +130,10 @@ class ViewportState:
             self.image_valid = False
         self.signature = signature
 
-    def _extract(self, ob, inst, lib):
+    def _extract(self, ob, inst, materials, lib):
         self.counters.extracts += 1
         try:
-            materials = [slot.material for slot in ob.material_slots]
-            extract = scene_sync.read_object(ob, scene_sync.instance_label(inst), lib=lib,
+            extract = scene_sync.read_object(ob, scene_sync.instance_label(inst), materials, lib=lib,
                                              line_settings=self.line_settings)
             self.counters.native_calls += extract is not None  # an empty host builds nothing
         except scene_sync.SkipObject as e:
@@ -146,11 +145,11 @@ class ViewportState:
                 self.reports.append(note)
         return ObjectCache(extract, materials) if extract is not None else None
 
-    def _reshade(self, ob, cache):
+    def _reshade(self, cache, materials):
         """Material settings changed: new uniforms; new edge batches only where the chosen edges
         changed. No native call: the classification is kept in the extract."""
         ex = cache.extract
-        cache.materials = [slot.material for slot in ob.material_slots]
+        cache.materials = list(materials)
         ex.slot_shading = [shading_of(m) for m in cache.materials] or [shading_of(None)]
         edges = scene_sync.rechoose_edges(ex)
         if not scene_sync.same_edges(edges, ex.edges):
@@ -269,7 +268,7 @@ def scene_signature(state, scene):
     """Everything besides geometry and materials that the image depends on."""
     s = scene.edgelight
     return (tuple((id(i.mesh), i.matrix.tobytes()) for i in state.instances), state.line_settings,
-            tuple((l.kind, l.color, l.position, l.direction, l.spot_cos, l.spot_blend) for l in state.lights),
+            tuple((lt.kind, lt.color, lt.position, lt.direction, lt.spot_cos, lt.spot_blend) for lt in state.lights),
             state.ambient, s.viewport_samples, s.highlights, scene.render.film_transparent)
 
 

@@ -28,6 +28,12 @@ void main()
   /* View depth of the centre point (1/z is affine in screen space under perspective). */
   bool persp = frame.eye.w > 0.5;
   float z = persp ? 1.0 / mix(1.0 / line_depth.x, 1.0 / line_depth.y, t) : mix(line_depth.x, line_depth.y, t);
+  /* The camera's clip range cuts the line where it cuts the surface (the quad's own depth is not
+   * the line's: line.vert.glsl draws it at 0). */
+  vec4 clip_c = frame.projection * vec4(0.0, 0.0, -z, 1.0);
+  if (abs(clip_c.z) > clip_c.w) {
+    discard;
+  }
   /* Visibility from the surface pass's ids (docs/lines.md, "Visibility"): visible where one of
    * the segment's own faces (line_faces, of this instance: line_vis.z) shows in the 3x3 pixels
    * around the centre point, or else where what shows is no nearer than the line within half a

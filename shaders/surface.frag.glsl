@@ -9,6 +9,9 @@
 void main()
 {
   out_depth = 1.0 / max(view_depth, 1e-30); /* 0 where nothing was drawn: infinitely far */
+  /* Seen from its front: a mirrored object (negative determinant) reverses its triangles'
+   * winding on screen, and world_nor (el_transform_normal) already points outward. */
+  bool front = gl_FrontFacing == (determinant(mat3(model)) >= 0.0);
 #ifdef EL_SURFACE_IDS
   /* Which instance and face covers the pixel, for the line pass's visibility (docs/lines.md):
    * surface_ids.y is the id of the batch's first triangle; 0 where nothing was drawn. */
@@ -17,7 +20,7 @@ void main()
 #ifdef EL_NORMAL_PASS
   /* The Normal render pass: world space, facing the camera, as Cycles writes it. Only the
    * program variant built for a render that asks for the pass has this output. */
-  out_normal = vec4(gl_FrontFacing ? normalize(world_nor) : -normalize(world_nor), 1.0);
+  out_normal = vec4(front ? normalize(world_nor) : -normalize(world_nor), 1.0);
 #endif
   const int mode = EL_SURFACE_MODE;
   if (mode == 3) {
@@ -26,7 +29,7 @@ void main()
   }
   vec3 N = normalize(world_nor);
   vec3 V = frame.eye.w > 0.5 ? normalize(frame.eye.xyz - world_pos) : -frame.view_dir.xyz;
-  if (!gl_FrontFacing) {
+  if (!front) {
     N = -N; /* back faces are shaded as seen (Blender shows both sides) */
   }
   if (mode == 1 || mode == 2) {

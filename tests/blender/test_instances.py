@@ -59,7 +59,7 @@ class Instances(unittest.TestCase):
         host = zoo.box("Host")
         zoo.geometry_nodes(host, cones_on_grid)
         instanced = zoo.coverage(helpers.render())
-        host.modifiers[0].node_group = zoo.geometry_nodes(zoo.box("Other"), lambda n, l, g: cones_on_grid(n, l, g, True))
+        host.modifiers[0].node_group = zoo.geometry_nodes(zoo.box("Other"), lambda n, ln, g: cones_on_grid(n, ln, g, True))
         bpy.data.objects.remove(bpy.data.objects["Other"])
         rec = helpers.render()
         self.assertEqual(len(rec["scene"].instances), 1)
@@ -197,3 +197,25 @@ class InconsistentWinding(unittest.TestCase):
         winding = [m for _, m in bad.get("messages", []) if "wound against" in m]
         self.assertEqual(len(winding), 1, bad.get("messages"))
         self.assertFalse([m for _, m in good.get("messages", []) if "wound against" in m])
+
+
+class MirroredObjects(unittest.TestCase):
+    def test_negative_scale_renders_like_the_mirror_image(self):
+        """A mirrored object (scale -1 on one axis, or a mirrored instance) reverses its
+        triangles' winding on screen: it must still be lit from its outside. A cube is its own
+        mirror image, so the mirrored cube's render equals the plain one's."""
+        helpers.needs_gpu()
+        renders = []
+        for scale in ((1.0, 1.0, 1.0), (-1.0, 1.0, 1.0), (-1.0, -1.0, -1.0)):
+            helpers.empty_scene(200, 150)
+            helpers.add_camera((4.0, -5.0, 3.5))
+            helpers.add_sun((0.4, -0.7, 0.9), 4.0)
+            cube = zoo.box("Cube", 2.0)
+            cube.scale = scale
+            cube.data.materials.append(zoo.material("Red", (0.7, 0.1, 0.05)))
+            helpers.only_lines(bpy.context.scene, silhouette=1.5, crease=1.5)
+            renders.append(helpers.render())
+        for rec in renders[1:]:
+            for buf in ("surface", "highlight", "pixels"):
+                diff = np.abs(np.asarray(rec[buf]) - np.asarray(renders[0][buf]))
+                self.assertLess(np.percentile(diff, 99.5), 2e-3, buf)

@@ -111,7 +111,7 @@ class BandVisibility(unittest.TestCase):
         that follows that face's slope let the band show on the plate; the ids do not."""
         helpers.needs_gpu()
         import scene_zoo as zoo
-        scene = helpers.empty_scene(480, 360)
+        helpers.empty_scene(480, 360)
         helpers.add_camera((0.4, -7.0, 1.08), (0.0, 0.0, 0.9))
         helpers.add_sun((0.3, -1.0, 0.8), 5.0)
         cube = zoo.box("Cube", 2.0)
@@ -130,3 +130,25 @@ class BandVisibility(unittest.TestCase):
         self.assertGreater(on_plate.sum(), 2000)
         self.assertGreater((band & ~on_plate).sum(), 50, "the edge's band shows beside the plate")
         self.assertEqual(int((band & on_plate).sum()), 0, "band pixels on the plate")
+
+
+class ClipRange(unittest.TestCase):
+    def test_lines_end_where_the_camera_clips_the_surface(self):
+        """Objects nearer than clip start or beyond clip end are not drawn, their lines neither."""
+        helpers.needs_gpu()
+        import scene_zoo as zoo
+        scene = helpers.empty_scene(320, 240)
+        cam = helpers.add_camera((0.0, -10.0, 0.0), (0.0, 0.0, 0.0))
+        cam.data.clip_start, cam.data.clip_end = 8.0, 12.5
+        helpers.add_sun()
+        zoo.box("Inside", 1.0, (0.0, 0.0, 0.0))
+        zoo.box("TooNear", 0.4, (-1.5, -3.0, 0.0))      # 7 from the camera
+        zoo.box("TooFar", 1.0, (2.5, 4.0, 0.0))          # 14 from the camera
+        helpers.only_lines(scene, silhouette=2.0, crease=2.0)
+        rec = helpers.render()
+        ink = np.asarray(rec["lines"])[..., 3] > 0.25
+        for name, centre in (("TooNear", (-1.5, -3.0, 0.0)), ("TooFar", (2.5, 4.0, 0.0))):
+            x, y = helpers.project(rec, [centre])[0].astype(int)
+            self.assertEqual(int(ink[y - 12:y + 12, x - 12:x + 12].sum()), 0, f"{name}: lines beyond the clip range")
+        x, y = helpers.project(rec, [(0.0, 0.0, 0.0)])[0].astype(int)
+        self.assertGreater(int(ink[y - 30:y + 30, x - 30:x + 30].sum()), 50, "the clipped-in cube keeps its lines")

@@ -305,7 +305,7 @@ class ScaleAndDebug(unittest.TestCase):
         np.testing.assert_array_equal(helpers.sample(ln, outline)[:3], (1.0, 0.0, 0.0))
 
     def test_wire_view_draws_every_edge(self):
-        scene = helpers.empty_scene(300, 300, debug={'WIRE'})
+        helpers.empty_scene(300, 300, debug={'WIRE'})
         bpy.ops.mesh.primitive_ico_sphere_add(subdivisions=2)
         helpers.add_camera((0.0, -5.0, 1.0))
         helpers.add_sun()
@@ -315,3 +315,39 @@ class ScaleAndDebug(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ContoursOnFlatFaces(unittest.TestCase):
+    def render(self, make):
+        scene = helpers.empty_scene(320, 240)
+        helpers.add_camera((4.0, -6.0, 3.0))
+        helpers.add_sun()
+        make(scene)
+        helpers.only_lines(scene, contour=2.0)
+        return np.asarray(helpers.render()["lines"])[..., 3] > 0.25
+
+    def test_a_flat_shaded_box_has_no_smooth_contours(self):
+        """Smooth contours are where smooth shading turns from the eye: a flat-shaded box has
+        none (the library's vertex normals would put some across its faces), while a smooth
+        sphere keeps its contour."""
+        helpers.needs_gpu()
+        import bmesh
+        import scene_zoo as zoo
+
+        def boxes(scene):
+            for i, angle in enumerate((0.0, 0.6, 1.1)):
+                box = zoo.box(f"Box{i}", 1.2, ((i - 1) * 1.8, 0.0, 0.0))
+                box.rotation_euler = (angle, 0.3 * i, angle)
+                box.data.polygons.foreach_set("use_smooth", [False] * len(box.data.polygons))
+
+        def ball(scene):
+            mesh = bpy.data.meshes.new("Ball")
+            bm = bmesh.new()
+            bmesh.ops.create_uvsphere(bm, u_segments=32, v_segments=16, radius=1.0)
+            bm.to_mesh(mesh)
+            bm.free()
+            mesh.polygons.foreach_set("use_smooth", [True] * len(mesh.polygons))
+            scene.collection.objects.link(bpy.data.objects.new("Ball", mesh))
+
+        self.assertEqual(int(self.render(boxes).sum()), 0, "contour strokes on flat-shaded boxes")
+        self.assertGreater(int(self.render(ball).sum()), 100, "the smooth sphere keeps its contour")

@@ -73,6 +73,26 @@ class ViewLayers(unittest.TestCase):
             self.assertEqual(cov[ey, ex], 0.0, name)
 
 
+class MaterialOverride(unittest.TestCase):
+    def test_a_layers_material_override_replaces_every_material(self):
+        """As Cycles renders it: the layer's override in every slot, the other layer untouched."""
+        helpers.needs_gpu()
+        scene = two_boxes()
+        for ob in (bpy.data.objects["LeftBox"], bpy.data.objects["RightBox"]):
+            ob.data.materials.append(zoo.material("Red" + ob.name, (0.8, 0.05, 0.05)))
+        green = zoo.material("Green", (0.05, 0.8, 0.05))
+        overridden = scene.view_layers.new("Override")
+        overridden.material_override = green
+        rec = helpers.render()
+        for name, want_green in ((scene.view_layers[0].name, False), ("Override", True)):
+            r = rec["layers"][name]
+            surface = np.asarray(r["surface"])
+            for centre in ((-3.0, 0.0, 1.0), (3.0, 0.0, 1.0)):
+                x, y = helpers.project(r, [centre])[0].astype(int)
+                rgb = surface[y, x, :3]
+                self.assertEqual(bool(rgb[1] > rgb[0]), want_green, f"{name} at {centre}: {rgb}")
+
+
 class RenderRegion(unittest.TestCase):
     BORDER = (0.1234, 0.5678, 0.3333, 0.9)
 
