@@ -1,6 +1,6 @@
 """What the passes need to know about a material, read once per frame."""
-from dataclasses import dataclass, replace
 import math
+from dataclasses import dataclass, replace
 
 from . import color_ramp, compat
 

@@ -63,6 +63,7 @@ def write_render(scene, layer, scene_data, camera, line_settings, vector, record
 def _view_camera(context):
     """The 3D view's camera (frame.Camera) when it does not look through the scene camera."""
     import numpy as np
+
     from .passes import frame
     rv3d, region = context.region_data, context.region
     if rv3d is None or region is None or rv3d.view_perspective == 'CAMERA':

@@ -2,8 +2,7 @@
 EdgeLight are shown for it too."""
 import bpy
 
-from . import color_ramp, compat
-from . import ui_light
+from . import color_ramp, compat, ui_light
 from .properties import LINE_TYPES
 
 

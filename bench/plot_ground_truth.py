@@ -10,7 +10,6 @@ BENCHMARKS.md).
 import csv
 import os
 import sys
-from collections import defaultdict
 
 import matplotlib
 

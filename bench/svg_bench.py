@@ -12,7 +12,6 @@ of the wall time of bpy.ops.render.render() is kept, and of the SVG writing alon
 engine's svg_output.write_render, timed in place). Prints a markdown table.
 """
 import argparse
-import math
 import os
 import statistics
 import sys
@@ -141,7 +140,8 @@ def main():
         fs_add = (f"{(med['freestyle_svg'] - med['freestyle']) * 1000:+.0f} ms "
                   f"({(med['freestyle_svg'] / med['freestyle'] - 1) * 100:+.0f} %)" if "freestyle" in med else "n/a")
         print(f"| {name} | {size} | {samples} | {el:.0f} ms | {el_svg:.0f} ms | {el_svg - el:+.0f} ms "
-              f"({(el_svg / el - 1) * 100:+.1f} %) | {med['write'] * 1000:.0f} ms | {el_bytes} | {fs[0]} | {fs[1]} | {fs_add} | {fs_bytes or 'n/a'} |")
+              f"({(el_svg / el - 1) * 100:+.1f} %) | {med['write'] * 1000:.0f} ms | {el_bytes} | {fs[0]} | {fs[1]} "
+              f"| {fs_add} | {fs_bytes or 'n/a'} |")
     sys.stdout.flush()
 
 

@@ -163,8 +163,11 @@ def steps():
             measure(f"{tris // 1000}k-triangle fandisk array", distance=size * 1.6, frames=3 if big else FRAMES, repeat=BIG_REPEAT if big else REPEAT)
     _, _, region = view3d()
     lines = [f"Blender {bpy.app.version_string}, 3D view {region.width}x{region.height} px, Rendered shading, "
-             f"1 viewport sample; ms per view_draw, best of {REPEAT} runs of {FRAMES} draws, the modes taking turns (the 1M scenes: best of {BIG_REPEAT} runs of 3).", "",
-             "| scene | triangles | edges drawn / culled | surface only, orbit | surface + lines, orbit | surface + highlights, orbit | edge quads, no shading | static redraw | lines add | highlights add | quads alone add | static / surface only |",
+             f"1 viewport sample; ms per view_draw, best of {REPEAT} runs of {FRAMES} draws, the modes taking turns "
+             f"(the 1M scenes: best of {BIG_REPEAT} runs of 3).", "",
+             "| scene | triangles | edges drawn / culled | surface only, orbit | surface + lines, orbit "
+             "| surface + highlights, orbit | edge quads, no shading | static redraw | lines add | highlights add "
+             "| quads alone add | static / surface only |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for name, tris, drawn, culled, r in rows:
         s, ln, h, fl, st = (r["surface only, orbit"], r["surface + lines, orbit"], r["surface + highlights, orbit"],

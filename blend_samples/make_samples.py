@@ -49,7 +49,7 @@ def add_camera(scene, location, target, lens=50.0, ortho_scale=None):
     ob = bpy.data.objects.new("Camera", cam)
     scene.collection.objects.link(ob)
     ob.location = location
-    direction = [t - l for t, l in zip(target, location)]
+    direction = [t - o for t, o in zip(target, location)]
     from mathutils import Vector
     ob.rotation_euler = Vector(direction).to_track_quat('-Z', 'Y').to_euler()
     scene.camera = ob

@@ -18,6 +18,7 @@ packages=(
   xvfb                  # the UI under xvfb-run for viewport tests
   xdotool               # presses Esc in the render window in the viewport session
   clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the C API fuzz test (scripts/fuzz.sh)
+  clang-format          # style.clang_format (.clang-format; ruff comes from PyPI below)
 )
 
 missing=()
@@ -50,5 +51,21 @@ if [ ! -f "$farm/stamp" ] || [ "$(cat "$farm/stamp")" != "$want" ]; then
     echo "$want" > "$farm/stamp"
   else
     echo "setup: installing the farm tools failed (the farm tests will say so)" >&2
+  fi
+fi
+
+# ruff for style.ruff (ruff.toml), pinned so that its rules do not move under the tests: in a
+# venv under build/lint, reused while the stamp matches. A failure leaves style.ruff failing.
+lint="${BUILD_DIR:-$(cd "$(dirname "$0")/.." && pwd)/build}/lint"
+want="ruff==0.17.6"
+if [ ! -f "$lint/stamp" ] || [ "$(cat "$lint/stamp")" != "$want" ]; then
+  echo "setup: installing $want into $lint"
+  rm -rf "$lint/venv"
+  mkdir -p "$lint"
+  if /usr/bin/python3.11 -m venv "$lint/venv" &&
+     "$lint/venv/bin/python" -m pip install --no-cache-dir --disable-pip-version-check -q "$want"; then
+    echo "$want" > "$lint/stamp"
+  else
+    echo "setup: installing ruff failed (style.ruff will say so)" >&2
   fi
 fi

@@ -110,7 +110,7 @@ void main()
     vec3 Vu = el_safe_normalize(Vm);
     ElArc g = el_arc(edge_dir, edge_n1, edge_n2, Vu);
     edge_color = vec4(el_edge_colour(g, mid, Vu, edge_dir), 1.0);
-    edge_arc = vec2(g.width, sqrt(dot(g.view, g.view)));  /* visible width, |E x V| */
+    edge_arc = vec2(g.width, sqrt(dot(g.view, g.view))); /* visible width, |E x V| */
   }
 
   /* The quad's sides, the same offsets from the line at both ends: a parallelogram, so that

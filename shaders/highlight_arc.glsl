@@ -117,8 +117,8 @@ vec4 el_table_row(float m)
   }
   else {
     y = log(m) / log(table_params.y) * last_row;
-    float phi_end = EL_TABLE_LAYOUT == 2 ? min(1.57079632679, el_bicubic_phi_end(m, table_params.z)) :
-                                           min(1.57079632679, table_params.z / sqrt(m));
+    float phi_end = EL_TABLE_LAYOUT == 2 ? min(1.57079632679, el_bicubic_phi_end(m, table_params.z))
+                                         : min(1.57079632679, table_params.z / sqrt(m));
     phi_to_texel = float(size.x - 1) / phi_end;
     out_scale = 1.0 / sqrt(m);
   }
@@ -231,12 +231,12 @@ ElWeight el_weight_on(ElWindow vis, float a, float b)
 }
 
 struct ElArc {
-  float alpha;     /* arc length */
-  vec2 view;       /* V in the arc frame; |view| = |E x V| */
-  ElWindow vis;    /* visible part */
-  float width;     /* its projected width, unit radius */
-  float hidden;    /* projected width of the hidden part */
-  vec3 a1, b1;     /* arc frame: N1 direction, and ez x a1 */
+  float alpha;  /* arc length */
+  vec2 view;    /* V in the arc frame; |view| = |E x V| */
+  ElWindow vis; /* visible part */
+  float width;  /* its projected width, unit radius */
+  float hidden; /* projected width of the hidden part */
+  vec3 a1, b1;  /* arc frame: N1 direction, and ez x a1 */
 };
 
 /* E, n1, n2, V need not be unit. */

@@ -33,7 +33,8 @@ void main()
   float t0 = 0.0, t1 = 1.0;
   if (c0.w < eps) {
     t0 = (eps - c0.w) / (c1.w - c0.w);
-  } else if (c1.w < eps) {
+  }
+  else if (c1.w < eps) {
     t1 = (eps - c0.w) / (c1.w - c0.w);
   }
   vec4 a = mix(c0, c1, t0), b = mix(c0, c1, t1);

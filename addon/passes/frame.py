@@ -11,8 +11,8 @@ import gpu
 import numpy as np
 
 from .. import compat, native
-from . import batches, line_pass, shader_lib, table, toon
 from .. import lines as ink
+from . import batches, line_pass, shader_lib, table, toon
 
 MAX_LIGHTS = 16
 

@@ -178,10 +178,13 @@ int main(int argc, char** argv) {
     for (size_t k = 0; k < candidates.size(); ++k) results[k].ns = collector.ns[ids[k]];
     const double paper_ns = results[0].ns;
 
-    std::printf("\nm range: paper [1, 128] (integer m by design; its row 'real m' interpolates between "
-                "integers), the others [1, %g]. rel = error / F(pi/2, m). n >= 1: m >= 2.\n\n", kMMax);
-    std::printf("| layout | size (phi x m) | bytes | max abs err | at (m, phi) | max rel err | max abs, n >= 1 "
-                "| max rel, n >= 1 | ns/lookup | ratio to paper |\n");
+    std::printf(
+        "\nm range: paper [1, 128] (integer m by design; its row 'real m' interpolates between "
+        "integers), the others [1, %g]. rel = error / F(pi/2, m). n >= 1: m >= 2.\n\n",
+        kMMax);
+    std::printf(
+        "| layout | size (phi x m) | bytes | max abs err | at (m, phi) | max rel err | max abs, n >= 1 "
+        "| max rel, n >= 1 | ns/lookup | ratio to paper |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
     for (size_t k = 0; k < candidates.size(); ++k) {
         const Candidate& c = candidates[k];

@@ -15,7 +15,7 @@ namespace el {
 
 namespace big_block {
 constexpr size_t kMinBytes = size_t(2) << 20;  // one huge page
-void* allocate(size_t bytes);                   // kMinBytes or more; throws std::bad_alloc
+void* allocate(size_t bytes);                  // kMinBytes or more; throws std::bad_alloc
 void release(void* p, size_t bytes);
 }  // namespace big_block
 

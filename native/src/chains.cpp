@@ -11,8 +11,8 @@ namespace {
 
 // CSR map from each distinct key to the item ends (2 * item + end) that carry it.
 struct KeyIndex {
-    std::vector<uint32_t> key_of_end;   // dense key id per item end
-    std::vector<uint32_t> offsets;      // per dense key
+    std::vector<uint32_t> key_of_end;  // dense key id per item end
+    std::vector<uint32_t> offsets;     // per dense key
     std::vector<uint32_t> ends;
 
     explicit KeyIndex(const std::vector<ChainItem>& items) {

@@ -12,7 +12,7 @@
 namespace el {
 
 struct ChainItem {
-    uint64_t key[2];   // endpoint identities: equal keys are the same point
+    uint64_t key[2];  // endpoint identities: equal keys are the same point
     glm::vec3 point[2];
 };
 

@@ -146,10 +146,10 @@ Weight weight_on(const Window& vis, float a, float b) {
 }
 
 struct Geometry {
-    float alpha;   // arc length
-    vec2 view;     // V projected onto the arc plane, in the arc frame (|view| = |E x V|)
-    Window vis;    // visible part of the arc
-    float width;   // its projected width, unit radius
+    float alpha;  // arc length
+    vec2 view;    // V projected onto the arc plane, in the arc frame (|view| = |E x V|)
+    Window vis;   // visible part of the arc
+    float width;  // its projected width, unit radius
 };
 
 // One of the two kernels: I = int max(N.D,0)^n w dtheta / int w dtheta over the visible arc.
@@ -291,7 +291,7 @@ el_highlight_result highlight_eval(const HighlightTable& table, const el_highlig
     g.alpha = alpha;
     g.view = vec2(glm::dot(V, a1), glm::dot(V, b1));
     const float s = std::sqrt(glm::dot(g.view, g.view));  // |E x V|
-    if (!(s > 0.0f)) return out;                           // looking exactly along the edge
+    if (!(s > 0.0f)) return out;                          // looking exactly along the edge
     // The horizons, where N.V = 0: the view direction turned by -90 and +90 degrees. The hidden
     // window is the visible one with the two swapped.
     const float h_lo = std::atan2(-g.view.x, g.view.y), h_hi = std::atan2(g.view.x, -g.view.y);

@@ -11,7 +11,7 @@ namespace el {
 inline constexpr double kReferenceTolerance = 1e-12;
 
 struct ReferenceStats {
-    int panels = 0;       // Gauss-Kronrod panels evaluated
+    int panels = 0;  // Gauss-Kronrod panels evaluated
     bool converged = true;
 };
 

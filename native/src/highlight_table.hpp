@@ -49,11 +49,11 @@ HighlightTable build_highlight_table(int32_t layout, uint32_t phi_count, uint32_
 // Everything a lookup needs that depends on m only: the rows, their weights, and the phi and
 // output scales. A pixel computes this once and reads several phi from it.
 struct TableRow {
-    const float* row0;  // first row of the stencil (2 rows, or 4 for BICUBIC)
-    float row_frac;     // y - j0 (the shader's row.y)
-    float row_w[4];     // weights of rows j0 .. j0+3 (linear: 1 - frac, frac)
-    float phi_to_texel; // texel coordinate per radian
-    float out_scale;    // F = out_scale * interpolated value (1/sqrt(m) for WARPED and BICUBIC)
+    const float* row0;   // first row of the stencil (2 rows, or 4 for BICUBIC)
+    float row_frac;      // y - j0 (the shader's row.y)
+    float row_w[4];      // weights of rows j0 .. j0+3 (linear: 1 - frac, frac)
+    float phi_to_texel;  // texel coordinate per radian
+    float out_scale;     // F = out_scale * interpolated value (1/sqrt(m) for WARPED and BICUBIC)
 };
 
 // Weights of the cubic Lagrange polynomial through nodes 0, 1, 2, 3 at s in [0, 3], in the

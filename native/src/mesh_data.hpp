@@ -15,10 +15,10 @@ namespace el {
 
 // Its builders write every element they size, so resize() leaves new elements unset.
 struct Topology {
-    UnsetBigArray<uint32_t> edge_vertices;     // 2 per edge
-    UnsetBigArray<uint32_t> triangle_edges;    // 3 per triangle, side s = corner s -> s+1; EL_NO_EDGE
-    UnsetBigArray<uint32_t> edge_face_offsets; // CSR: edge_count + 1
-    UnsetBigArray<uint32_t> edge_faces;        // triangle indices
+    UnsetBigArray<uint32_t> edge_vertices;      // 2 per edge
+    UnsetBigArray<uint32_t> triangle_edges;     // 3 per triangle, side s = corner s -> s+1; EL_NO_EDGE
+    UnsetBigArray<uint32_t> edge_face_offsets;  // CSR: edge_count + 1
+    UnsetBigArray<uint32_t> edge_faces;         // triangle indices
     bool host_edges = false;
 
     uint32_t edge_count() const { return uint32_t(edge_vertices.size() / 2); }
@@ -26,27 +26,27 @@ struct Topology {
 };
 
 struct Geometry {
-    std::vector<glm::vec3> face_normals;     // unit, or zero for degenerate faces
-    std::vector<float> face_offsets;         // dot(normal, first corner): plane of each face
+    std::vector<glm::vec3> face_normals;  // unit, or zero for degenerate faces
+    std::vector<float> face_offsets;      // dot(normal, first corner): plane of each face
     // The same planes as structure-of-arrays, padded with zero planes to a multiple of 64 faces,
     // so the facing pass runs 4 faces per SSE instruction and 16 per output store.
     std::vector<float> plane_x, plane_y, plane_z, plane_d;
     std::vector<uint8_t> face_degenerate;
-    std::vector<glm::vec3> vertex_normals;   // unit (host's or angle-weighted), zero if undefined
+    std::vector<glm::vec3> vertex_normals;  // unit (host's or angle-weighted), zero if undefined
 };
 
 // The library's consistent winding per connected component (orient.hpp).
 struct Orientation {
-    std::vector<uint8_t> flips;              // per triangle: 1 where the input winding was reversed
-    uint32_t reoriented_triangles = 0;       // number of flips
-    uint32_t input_flipped_edges = 0;        // manifold edges both faces ran the same way as given
+    std::vector<uint8_t> flips;         // per triangle: 1 where the input winding was reversed
+    uint32_t reoriented_triangles = 0;  // number of flips
+    uint32_t input_flipped_edges = 0;   // manifold edges both faces ran the same way as given
 };
 
 struct Classification {
-    std::vector<uint32_t> edge_flags;        // EL_EDGE_* | EL_MARK_*, crease bit per threshold
-    std::vector<glm::vec3> n1, n2;           // the two face normals the highlight pass needs
-    std::vector<float> angle_deg;            // angle between n1 and n2
-    std::vector<uint32_t> face1, face2;      // the two faces of manifold edges (else EL_NO_EDGE)
+    std::vector<uint32_t> edge_flags;    // EL_EDGE_* | EL_MARK_*, crease bit per threshold
+    std::vector<glm::vec3> n1, n2;       // the two face normals the highlight pass needs
+    std::vector<float> angle_deg;        // angle between n1 and n2
+    std::vector<uint32_t> face1, face2;  // the two faces of manifold edges (else EL_NO_EDGE)
     // Edges that can be silhouettes (manifold, not degenerate) and their faces packed f1 | f2 << 32:
     // one sequential stream for the per-view edge pass.
     std::vector<uint32_t> silhouette_candidates;
@@ -56,12 +56,12 @@ struct Classification {
 
 struct MeshData {
     std::vector<glm::vec3> positions;
-    std::vector<uint32_t> triangles;         // 3 per triangle, in the oriented winding
-    std::vector<uint32_t> edge_marks;        // host marks per edge (empty if none)
-    std::vector<float> bevel_weights;        // per edge (empty if none)
-    std::vector<uint32_t> triangle_materials;// per triangle (empty if none)
-    std::vector<glm::vec3> host_face_normals;// per triangle, input winding (empty if none)
-    Topology topo;                           // triangle_edges follow the oriented winding
+    std::vector<uint32_t> triangles;           // 3 per triangle, in the oriented winding
+    std::vector<uint32_t> edge_marks;          // host marks per edge (empty if none)
+    std::vector<float> bevel_weights;          // per edge (empty if none)
+    std::vector<uint32_t> triangle_materials;  // per triangle (empty if none)
+    std::vector<glm::vec3> host_face_normals;  // per triangle, input winding (empty if none)
+    Topology topo;                             // triangle_edges follow the oriented winding
     Orientation orient;
     Geometry geom;
     Classification cls;

@@ -21,7 +21,7 @@ struct ViewCache {
     std::vector<uint32_t> silhouettes;
     std::vector<float> contour_points;
     std::vector<uint32_t> contour_triangles;
-    std::vector<uint64_t> contour_keys;      // 2 per segment: the triangle side of each end
+    std::vector<uint64_t> contour_keys;  // 2 per segment: the triangle side of each end
     el_view_stats stats{};
 
     // Returns true when the outputs changed.

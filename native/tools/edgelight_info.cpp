@@ -93,7 +93,8 @@ int main(int argc, char** argv) {
     try {
         args = parse(argc, argv);
     } catch (const std::exception& e) {
-        std::cerr << "edgelight-info: " << e.what() << "\n" << kUsage;
+        std::cerr << "edgelight-info: " << e.what() << "\n"
+                  << kUsage;
         return 2;
     }
     try {

@@ -1,14 +1,14 @@
 // edgelight-render MESH --out OUT.png [options]
 // Renders a mesh with EdgeLight's surface and edge-highlight passes offscreen (OSMesa, llvmpipe)
 // from the same shaders/ sources the Blender add-on compiles, and writes a PNG.
-#include "mesh_batches.hpp"
 #include "cli_args.hpp"
+#include "mesh_batches.hpp"
 #include "mesh_io.hpp"
 #include "mesh_limits.hpp"
-#include "tool_failure.hpp"
 #include "osmesa_context.hpp"
 #include "png_write.hpp"
 #include "render_passes.hpp"
+#include "tool_failure.hpp"
 
 #include <edgelight/edgelight.h>
 
@@ -152,7 +152,8 @@ int main(int argc, char** argv) {
     try {
         args = parse(argc, argv);
     } catch (const std::exception& e) {
-        std::cerr << "edgelight-render: " << e.what() << "\n" << kUsage;
+        std::cerr << "edgelight-render: " << e.what() << "\n"
+                  << kUsage;
         return 2;
     }
     try {

@@ -11,8 +11,8 @@ EL_GL_FUNCTIONS(EL_GL_DEFINE)
 #undef EL_GL_DEFINE
 
 void load(void* (*get)(const char* name)) {
-#define EL_GL_LOAD(type, name)                                                              \
-    name = reinterpret_cast<type>(get("gl" #name));                                          \
+#define EL_GL_LOAD(type, name)                      \
+    name = reinterpret_cast<type>(get("gl" #name)); \
     if (!name) throw std::runtime_error("the GL context has no gl" #name);
     EL_GL_FUNCTIONS(EL_GL_LOAD)
 #undef EL_GL_LOAD

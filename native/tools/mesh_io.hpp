@@ -9,8 +9,8 @@
 namespace el_tools {
 
 struct LoadedMesh {
-    std::vector<float> positions;    // xyz
-    std::vector<uint32_t> triangles; // 3 per triangle
+    std::vector<float> positions;     // xyz
+    std::vector<uint32_t> triangles;  // 3 per triangle
 };
 
 // Throws std::runtime_error "cannot read 'PATH': REASON" (one line) when the file cannot be

@@ -19,8 +19,9 @@ OsmesaContext::OsmesaContext() {
                          OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
     OSMesaContext c = OSMesaCreateContextAttribs(attrs, nullptr);
     if (!c) {
-        throw std::runtime_error("OSMesa could not create an OpenGL 4.5 core context (needs Mesa's llvmpipe; "
-                                 "Debian: libosmesa6, scripts/setup.sh installs it)");
+        throw std::runtime_error(
+            "OSMesa could not create an OpenGL 4.5 core context (needs Mesa's llvmpipe; "
+            "Debian: libosmesa6, scripts/setup.sh installs it)");
     }
     ctx_ = c;
     if (!OSMesaMakeCurrent(c, placeholder_, GL_UNSIGNED_BYTE, 1, 1)) {

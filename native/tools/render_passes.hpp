@@ -24,7 +24,7 @@ struct Material {
     float shininess = 30.0f;      // Blinn exponent (roughness 0.5)
     glm::vec3 tint{1.0f};
     float K = 1.0f;
-    float radius = 0.01f;         // r_e, world units
+    float radius = 0.01f;  // r_e, world units
 };
 
 struct Scene {

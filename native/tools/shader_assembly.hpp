@@ -28,7 +28,7 @@ struct ProgramInterface {
 struct AssembledProgram {
     std::string name;
     ProgramInterface iface;
-    std::string vertex;    // complete sources, #version line first
+    std::string vertex;  // complete sources, #version line first
     std::string fragment;
 };
 

@@ -15,7 +15,7 @@ import os
 import runpy
 import sys
 
-import bpy
+import bpy  # noqa: F401 -- starts Blender (the module), before bl_pkg and the add-on are imported
 
 
 def extension_command(args):

@@ -10,7 +10,6 @@ Prints 'EDGELIGHT_INSTALLED <module> <file>' and, when rendering, 'EDGELIGHT_REN
 import os
 import sys
 
-import addon_utils
 import bpy
 
 zip_path, samples, do_render = sys.argv[sys.argv.index("--") + 1:]

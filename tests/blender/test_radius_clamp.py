@@ -2,7 +2,6 @@
 the band stays on its faces instead of spreading past the object as a starburst."""
 import unittest
 
-import bpy
 import numpy as np
 
 import helpers

@@ -1,7 +1,6 @@
 """blend_samples/make_samples.py regenerates every sample, and they render."""
 import os
 import subprocess
-import sys
 import tempfile
 import unittest
 

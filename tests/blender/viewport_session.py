@@ -242,8 +242,8 @@ def steps():
     # moving their host re-extracts nothing.
 
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    import scene_zoo as zoo
     import edgelight
+    import scene_zoo as zoo
     state = edgelight.viewport.last_state
     before_instances = len(state.instances)
 

@@ -10,13 +10,13 @@
 TEST(BigArray, BigBlocksStartOnAHugePageBoundaryAndKeepTheirContents) {
     el::UnsetBigArray<uint32_t> a(1000);  // heap
     std::iota(a.begin(), a.end(), 0u);
-    a.resize(3u << 20);                   // 12 MiB: its own mapping
+    a.resize(3u << 20);  // 12 MiB: its own mapping
     EXPECT_EQ(reinterpret_cast<uintptr_t>(a.data()) % el::big_block::kMinBytes, 0u);
     for (uint32_t i = 0; i < 1000; ++i) ASSERT_EQ(a[i], i) << "copied on growth";
-    a.back() = 7u;                        // the last element is mapped and writable
+    a.back() = 7u;  // the last element is mapped and writable
     EXPECT_EQ(a.back(), 7u);
     a.resize(500);
-    a.shrink_to_fit();                    // back to the heap
+    a.shrink_to_fit();  // back to the heap
     EXPECT_EQ(a[499], 499u);
 }
 

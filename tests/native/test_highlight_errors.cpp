@@ -23,11 +23,11 @@ constexpr el_table_desc kSmall{EL_TABLE_WARPED, 64, 16, 10001.0f};
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 const float kInf = std::numeric_limits<float>::infinity();
 
-#define EXPECT_FAILS(call, status, needle)                                                     \
-    do {                                                                                       \
-        EXPECT_EQ((call), (status)) << #call;                                                  \
-        const std::string msg = el_last_error();                                               \
-        EXPECT_NE(msg.find(needle), std::string::npos) << #call << ": \"" << msg << "\"";      \
+#define EXPECT_FAILS(call, status, needle)                                                \
+    do {                                                                                  \
+        EXPECT_EQ((call), (status)) << #call;                                             \
+        const std::string msg = el_last_error();                                          \
+        EXPECT_NE(msg.find(needle), std::string::npos) << #call << ": \"" << msg << "\""; \
     } while (0)
 
 el_highlight_input valid_input() {

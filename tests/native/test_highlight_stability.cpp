@@ -67,7 +67,7 @@ public:
                 ++m.samples;
                 if (!finite_in_range(e) || !finite_in_range(r)) {
                     ++(std::isfinite(e.specular + e.diffuse + e.weight + e.visible_fraction + e.r_max) ? m.out_of_range
-                                                                                                         : m.nonfinite);
+                                                                                                       : m.nonfinite);
                     continue;
                 }
                 double d = std::max({rel(e.weight, r.weight), rel(double(e.weight) * e.specular, double(r.weight) * r.specular),

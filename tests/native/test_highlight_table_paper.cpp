@@ -59,9 +59,10 @@ TEST(HighlightTablePaper, InterpolationBoundAt1024x128) {
         worst_ratio = std::max(worst_ratio, err_m / bound);
     }
     EXPECT_LE(worst, paper_bound + 4.0 * std::ldexp(1.0, -24));
-    std::printf("[ paper 1024x128 ] bound h^2/8 max|F''| at m=128: %.4g; measured max error %.4g (m = %d); "
-                "max measured/bound over m: %.3f\n",
-                paper_bound, worst, worst_m, worst_ratio);
+    std::printf(
+        "[ paper 1024x128 ] bound h^2/8 max|F''| at m=128: %.4g; measured max error %.4g (m = %d); "
+        "max measured/bound over m: %.3f\n",
+        paper_bound, worst, worst_m, worst_ratio);
     el_highlight_table_destroy(t);
 }
 

@@ -24,9 +24,9 @@ float weight(float K, float r, float d, float r_max) {
 
 TEST(HighlightWeight, Formula) {
     EXPECT_FLOAT_EQ(weight(100, 0.01f, 4, 2), 100 * 0.01f / (4 * 2));
-    EXPECT_EQ(weight(0, 0.01f, 4, 2), 0.0f);      // K = 0 switches highlights off
-    EXPECT_EQ(weight(100, 0, 4, 2), 0.0f);        // no radius, no edge
-    EXPECT_EQ(weight(100, 0.01f, 4, 0), 0.0f);    // r_max = 0: nothing visible
+    EXPECT_EQ(weight(0, 0.01f, 4, 2), 0.0f);                // K = 0 switches highlights off
+    EXPECT_EQ(weight(100, 0, 4, 2), 0.0f);                  // no radius, no edge
+    EXPECT_EQ(weight(100, 0.01f, 4, 0), 0.0f);              // r_max = 0: nothing visible
     EXPECT_EQ(weight(1e30f, 1e30f, 1e-30f, 1e-30f), 1.0f);  // clamped, no overflow
     EXPECT_EQ(weight(1e-30f, 1e-30f, 1e30f, 1e30f), 0.0f);  // underflows to 0, not NaN
     float prev = 0;
