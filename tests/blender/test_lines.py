@@ -332,6 +332,7 @@ class ContoursOnFlatFaces(unittest.TestCase):
         sphere keeps its contour."""
         helpers.needs_gpu()
         import bmesh
+
         import scene_zoo as zoo
 
         def boxes(scene):
