@@ -7,6 +7,7 @@ import bpy
 import numpy as np
 
 from . import compat
+from .panel_base import EdgeLightPanel
 
 # Where nothing was drawn, Depth holds what Cycles and EEVEE write there.
 BACKGROUND_DEPTH = 1e10
@@ -96,16 +97,9 @@ def write(result_layer, view_layer, buffers, record=None):
             record[name] = pixels
 
 
-class VIEWLAYER_PT_edgelight_passes(bpy.types.Panel):
+class VIEWLAYER_PT_edgelight_passes(EdgeLightPanel, bpy.types.Panel):
     bl_label = "EdgeLight Passes"
-    bl_space_type = 'PROPERTIES'
-    bl_region_type = 'WINDOW'
     bl_context = "view_layer"
-    COMPAT_ENGINES = {'EDGELIGHT'}
-
-    @classmethod
-    def poll(cls, context):
-        return context.engine in cls.COMPAT_ENGINES
 
     def draw(self, context):
         layout = self.layout

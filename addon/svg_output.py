@@ -8,6 +8,7 @@ import time
 import bpy
 
 from . import svg_write, vector_lines
+from .panel_base import EdgeLightPanel
 
 # A render-based export (the operator without a 3D view, e.g. headless) names its file here;
 # the engine writes it in place of the frame's path, once.
@@ -122,17 +123,11 @@ class EDGELIGHT_OT_export_svg(bpy.types.Operator):
         write(path, data, camera, line_settings, vector)
 
 
-class EDGELIGHT_PT_lines_svg(bpy.types.Panel):
+class EDGELIGHT_PT_lines_svg(EdgeLightPanel, bpy.types.Panel):
     bl_label = "SVG Output"
-    bl_space_type = 'PROPERTIES'
-    bl_region_type = 'WINDOW'
     bl_context = "render"
     bl_parent_id = "EDGELIGHT_PT_lines"
     bl_options = {'DEFAULT_CLOSED'}
-
-    @classmethod
-    def poll(cls, context):
-        return context.engine == 'EDGELIGHT'
 
     def draw_header(self, context):
         self.layout.prop(context.scene.edgelight_svg, "enabled", text="")

@@ -3,17 +3,8 @@ EdgeLight are shown for it too."""
 import bpy
 
 from . import color_ramp, compat, ui_light
+from .panel_base import EdgeLightPanel
 from .properties import LINE_TYPES
-
-
-class EdgeLightPanel:
-    bl_space_type = 'PROPERTIES'
-    bl_region_type = 'WINDOW'
-    COMPAT_ENGINES = {'EDGELIGHT'}
-
-    @classmethod
-    def poll(cls, context):
-        return context.engine in cls.COMPAT_ENGINES
 
 
 class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):

@@ -3,17 +3,16 @@ and nothing else. Blender's EEVEE light panel also shows diffuse / specular / vo
 radius and shadows, which EdgeLight ignores, so it is not shown for EdgeLight."""
 import bpy
 
+from .panel_base import EdgeLightPanel
 
-class EDGELIGHT_PT_light(bpy.types.Panel):
+
+class EDGELIGHT_PT_light(EdgeLightPanel, bpy.types.Panel):
     bl_label = "Light"
-    bl_space_type = 'PROPERTIES'
-    bl_region_type = 'WINDOW'
     bl_context = "data"
-    COMPAT_ENGINES = {'EDGELIGHT'}
 
     @classmethod
     def poll(cls, context):
-        return context.engine in cls.COMPAT_ENGINES and context.light is not None
+        return super().poll(context) and context.light is not None
 
     def draw(self, context):
         light = context.light

@@ -188,10 +188,12 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False):
     branch would make every fragment pay for every mode on llvmpipe). With `ids`, the variant
     that also writes which instance and face covers each pixel (the line pass's visibility,
     docs/lines.md)."""
-    draws = {}
+    draws, firsts = {}, {}
     for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
-        first = slot_first_ids(gm.extract) if ids else {}
+        if ids and id(gm.extract) not in firsts:  # once per geometry, not per instance
+            firsts[id(gm.extract)] = slot_first_ids(gm.extract)
+        first = firsts.get(id(gm.extract), {})
         for slot, batch in gm.surface.items():
             s = gm.extract.slot_shading[slot]
             draws.setdefault(_surface_mode(s, whiteout), []).append(

@@ -43,6 +43,19 @@ def mesh_object(name, verts, faces, location=(0.0, 0.0, 0.0), collection=None):
     return ob
 
 
+def rounded_part(name, bm, rgb, radius):
+    """An object made from a bmesh (freed here), with one material rounding its edges at radius."""
+    mesh = bpy.data.meshes.new(name)
+    bm.to_mesh(mesh)
+    bm.free()
+    ob = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(ob)
+    mat = material(name + "Material", rgb)
+    mat.edgelight.radius = radius
+    mesh.materials.append(mat)
+    return ob
+
+
 def box(name, size=1.0, location=(0.0, 0.0, 0.0), collection=None):
     s = size / 2.0
     verts = [(x, y, z) for x in (-s, s) for y in (-s, s) for z in (-s, s)]

@@ -167,7 +167,6 @@ class InconsistentWinding(unittest.TestCase):
         helpers.empty_scene(320, 240)
         helpers.add_camera((4.0, -5.0, 3.5))
         helpers.add_sun()
-        mesh = bpy.data.meshes.new("Part")
         bm = bmesh.new()
         bmesh.ops.create_cube(bm, size=2.0)
         bmesh.ops.subdivide_edges(bm, edges=bm.edges[:], cuts=2, use_grid_fill=True)
@@ -176,13 +175,7 @@ class InconsistentWinding(unittest.TestCase):
             rng = np.random.default_rng(7)
             faces = [f for f in bm.faces if rng.random() < 0.5]
             bmesh.ops.reverse_faces(bm, faces=faces)
-        bm.to_mesh(mesh)
-        bm.free()
-        ob = bpy.data.objects.new("Part", mesh)
-        bpy.context.scene.collection.objects.link(ob)
-        mat = zoo.material("Red", (0.7, 0.1, 0.08))
-        mat.edgelight.radius = 0.05
-        mesh.materials.append(mat)
+        zoo.rounded_part("Part", bm, (0.7, 0.1, 0.08), 0.05)
         helpers.only_lines(bpy.context.scene, silhouette=2.0, crease=2.0)
         return helpers.render()
 

@@ -14,7 +14,6 @@ import scene_zoo as zoo
 def box_with_cut_edge(lift=0.0, cuts=3):
     """A 2 m box whose top-back edge (y = 1, z = 1) carries `cuts` extra collinear vertices;
     `lift` raises the middle one out of the top's plane (making slivers)."""
-    mesh = bpy.data.meshes.new("Box")
     bm = bmesh.new()
     bmesh.ops.create_cube(bm, size=2.0)
     edge = next(e for e in bm.edges if all(abs(v.co.y - 1) < 1e-6 and abs(v.co.z - 1) < 1e-6 for v in e.verts))
@@ -23,14 +22,7 @@ def box_with_cut_edge(lift=0.0, cuts=3):
     if lift:
         middle = next(v for v in bm.verts if abs(v.co.x) < 1e-6 and abs(v.co.y - 1) < 1e-6)
         middle.co.z += lift
-    bm.to_mesh(mesh)
-    bm.free()
-    ob = bpy.data.objects.new("Box", mesh)
-    bpy.context.scene.collection.objects.link(ob)
-    mat = zoo.material("Steel", (0.5, 0.5, 0.55))
-    mat.edgelight.radius = 0.04
-    mesh.materials.append(mat)
-    return ob
+    return zoo.rounded_part("Box", bm, (0.5, 0.5, 0.55), 0.04)
 
 
 class CutEdges(unittest.TestCase):
