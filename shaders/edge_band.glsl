@@ -33,14 +33,16 @@ vec3 el_arc_normal(ElArc g, float u)
 
 /* The visible band across the edge line, in units of r along P = E x V / |E x V|: the images of
  * the visible arc's ends vis.lo and vis.hi (in that order; either may be the larger). A circular
- * fillet of radius r tangent to both faces has its axis at c - r C, C = (N1 + N2) / (1 + N1.N2),
- * so its point of normal N projects to r P.(N - C) from the sharp edge's line. Near N1 = -N2 the
- * fillet's tangent points run off to infinity; the denominator is floored (the band is then
- * clamped by the quad anyway). */
-vec2 el_band_ends(ElArc g, vec3 P)
+ * fillet of radius r tangent to both faces has its axis at c - fold r C, C = (N1 + N2) / (1 + N1.N2),
+ * and its point of normal N at axis + fold r N: it projects to fold r P.(N - C) from the sharp
+ * edge's line. fold is +1 on a convex edge (the axis inside the solid) and -1 on a concave one
+ * (the axis in the air, the fillet filling the corner): the same arc of normals, laid across the
+ * line the other way round. Near N1 = -N2 the fillet's tangent points run off to infinity; the
+ * denominator is floored (the band is then clamped by the quad anyway). */
+vec2 el_band_ends(ElArc g, vec3 P, float fold)
 {
   vec3 C = (g.a1 + el_arc_normal(g, g.alpha)) / max(1.0 + cos(g.alpha), 1e-3);
-  return vec2(dot(P, el_arc_normal(g, g.vis.lo) - C), dot(P, el_arc_normal(g, g.vis.hi) - C));
+  return fold * vec2(dot(P, el_arc_normal(g, g.vis.lo) - C), dot(P, el_arc_normal(g, g.vis.hi) - C));
 }
 
 /* The part of the visible arc whose image is the fraction [fa, fb] (0 = vis.lo's end, 1 =

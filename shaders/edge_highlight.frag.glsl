@@ -110,7 +110,7 @@ void main()
     vec4 q0 = frame.projection * (frame.view * vec4(X, 1.0));
     vec4 q1 = frame.projection * (frame.view * vec4(X + P * world_per_px, 1.0));
     float side = dot((q1.xy / q1.w - q0.xy / q0.w) * frame.viewport.xy, edge_screen.zw) < 0.0 ? -1.0 : 1.0;
-    vec2 ends = el_band_ends(g, P) * (side * edge_radius / world_per_px);
+    vec2 ends = el_band_ends(g, P, edge_fold) * (side * edge_radius / world_per_px);
     float b0 = min(ends.x, ends.y), b1 = max(ends.x, ends.y);
     float pa = max(across - 0.5, b0), pb = min(across + 0.5, b1);
     float cover = clamp(pb - pa, 0.0, 1.0);

@@ -28,7 +28,7 @@ vec2 el_band_px(vec3 at, vec4 clip_at, vec2 across)
   vec3 P = el_safe_normalize(cross(el_safe_normalize(edge_dir), V));
   vec4 q1 = frame.projection * (frame.view * vec4(at + P * world_per_px, 1.0));
   float side = dot((q1.xy / q1.w - clip_at.xy / clip_at.w) * frame.viewport.xy, across) < 0.0 ? -1.0 : 1.0;
-  vec2 ends = el_band_ends(g, P) * (side * edge_radius / world_per_px);
+  vec2 ends = el_band_ends(g, P, edge_fold) * (side * edge_radius / world_per_px);
   return vec2(min(ends.x, ends.y), max(ends.x, ends.y));
 }
 
@@ -70,6 +70,10 @@ void main()
   edge_n2 = el_transform_normal(model, n2);
   edge_dir = w1 - w0;
   edge_radius = corner.z * length(mat3(model) * normalize(vec3(1.0)));
+  /* Convex or concave, in object space where a mirroring model cannot turn it: N1's face runs
+   * p0 -> p1, so the surface turns away from its outside where N1 x N2 points along p0 -> p1
+   * (the library's EL_EDGE_CONVEX rule, classify.cpp). */
+  edge_fold = dot(cross(n1, n2), p1 - p0) < 0.0 ? -1.0 : 1.0;
 
   vec4 c0 = frame.projection * (frame.view * vec4(w0, 1.0));
   vec4 c1 = frame.projection * (frame.view * vec4(w1, 1.0));
