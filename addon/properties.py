@@ -10,7 +10,15 @@ from . import line_units
 #   1: first layout
 #   2: material `enabled` -> `use_rounding`
 #   3: material `ramp` (a list of stops) and `ramp_interpolation` -> `shade_ramp` (a colour ramp)
-SETTINGS_VERSION = 3
+#   4: material `K` (Highlight Strength) at most 1; a stored K > 1 becomes K = 1 and the radius times K
+SETTINGS_VERSION = 4
+
+# The largest Highlight Strength: 1 draws the coverage a real rounded edge of the radius has.
+# Above 1, W = clamp(K x covered length, 0, 1) saturates the band's partly covered pixels: on a
+# band under a pixel wide that is the band of K times the radius, and on a wider band only its
+# anti-aliasing is lost (stair-stepped rims). So a wider band is asked for with the radius, which
+# stays a fillet's (radius_clamp.py); docs/addon.md, "Large settings".
+K_MAX = 1.0
 
 
 def _tag(self, context):
@@ -25,9 +33,9 @@ class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
         description="Round this material's chosen edges with a thin highlight, like a bevel would")
     # Stored as `K` (the paper's name): files and scripts keep working.
     K: bpy.props.FloatProperty(
-        update=_tag, name="Highlight Strength", default=1.0, min=0.0, soft_max=4.0,
+        update=_tag, name="Highlight Strength", default=1.0, min=0.0, max=K_MAX, subtype='FACTOR',
         description="How strongly the edge highlight shows: 1 is as bright and wide as a real rounded "
-                    "edge of this radius, 0 turns it off, more exaggerates it")
+                    "edge of this radius, 0 turns it off. For a wider or brighter band, raise the Radius")
     radius: bpy.props.FloatProperty(
         update=_tag, name="Radius", default=0.01, min=0.0, soft_max=0.1, unit='LENGTH', precision=4,
         description="Bevel radius in the object's local units, scaled with the object, like the Bevel "

@@ -15,11 +15,13 @@ _CHUNK = 1 << 21
 
 @dataclass
 class Polygons:
-    """What the widths need of a mesh's polygons (object space)."""
+    """What the widths and the band ends (band_ends.py) need of a mesh's polygons."""
     start: np.ndarray        # per polygon: first loop
     total: np.ndarray        # per polygon: loop count
     loop_vert: np.ndarray    # per loop: vertex
     tri_poly: np.ndarray     # per loop triangle: its polygon
+    loop_edge: np.ndarray = None  # per loop: the edge from its vertex to the next loop's
+    normal: np.ndarray = None     # per polygon: unit normal as the file winds it (zero: no area)
 
 
 def widths(polys, positions, edges, faces):

@@ -8,9 +8,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import compat, native, radius_clamp
+from . import band_ends, compat, native, radius_clamp
 from .lines import static_lines, surface_ids
-from .materials import shading_of
+from .materials import record_radius_clamps, shading_of
+from .passes import shader_specs
 
 GEOMETRY_TYPES = {'MESH', 'CURVE', 'SURFACE', 'FONT', 'META'}
 
@@ -24,6 +25,7 @@ class EdgeSet:
     n2: np.ndarray
     radius: np.ndarray
     faces: np.ndarray = None           # (N, 2) float32 surface ids of its two faces (band visibility)
+    ends: np.ndarray = None            # (N, 4) float32 where its band ends on each face (band_ends.py)
 
     def __len__(self):
         return len(self.radius)
@@ -69,7 +71,7 @@ class MeshExtract:
 
 @dataclass
 class Light:
-    kind: int                          # 0 sun, 1 point, 2 spot, 3 area
+    kind: int                          # EL_LIGHT value (shaders/frame_data.json)
     color: tuple                       # colour x strength
     position: tuple
     direction: tuple                   # where the light points
@@ -168,7 +170,8 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     # Each triangle classifies by its polygon's normal: a sliver's own normal is noise, and a
     # zero-area piece along a polygon's side (collinear corners) would drop that side's edge.
     tri_poly = _foreach(mesh.loop_triangles, "polygon_index", np.int64)
-    tri_normals = polygon_unit_normals(mesh, positions)[tri_poly]
+    poly_normals = polygon_unit_normals(mesh, positions)
+    tri_normals = poly_normals[tri_poly]
     try:
         m = native.Mesh(positions, tri_verts, edges=edges, triangle_edges=tri_edges, edge_marks=marks,
                         bevel_weights=bevel, triangle_materials=tri_slot.astype(np.uint32),
@@ -189,7 +192,8 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     surface_id[order] = np.arange(1, tri_count + 1, dtype=np.uint32)
     polygons = radius_clamp.Polygons(_foreach(mesh.polygons, "loop_start", np.int64),
                                      _foreach(mesh.polygons, "loop_total", np.int64),
-                                     _foreach(mesh.loops, "vertex_index", np.int64), tri_poly)
+                                     _foreach(mesh.loops, "vertex_index", np.int64), tri_poly,
+                                     _foreach(mesh.loops, "edge_index", np.int64), poly_normals)
     # Smooth contours exist only where the surface is shaded smooth: a flat face has one normal.
     nor = out.corner_nor.reshape(-1, 3, 3)
     out.smooth_faces = np.any(np.einsum("tck,tk->tc", nor, tri_normals) < 1.0 - 1e-5, axis=1)
@@ -275,25 +279,34 @@ def choose_edges(d, shading):
     if d.polygons is not None and len(picked_edges):
         limit = radius_clamp.max_radius(d.widths_of(picked_edges), angles[picked_edges])
         radius[picked_edges] = np.minimum(radius[picked_edges], limit).astype(np.float32)
+    else:
+        limit = np.full(len(picked_edges), np.inf)
+    # For the material panel's note (materials.radius_clamps): nothing is written to the materials.
+    e = picked_edges
+    record_radius_clamps(d, shading, ((slot_a[e], pick_a[e], rad_a[e]), (slot_b[e], pick_b[e], rad_b[e])), limit)
     out = {}
     for slot in np.unique(slot_a[chosen]):
         sel = np.flatnonzero(chosen & (slot_a == slot))
+        faces = np.stack([face_a[sel], face_b[sel]], axis=1)
         out[int(slot)] = EdgeSet(positions[edges[sel, 0]], positions[edges[sel, 1]],
                                  np.ascontiguousarray(normals[sel, :3]), np.ascontiguousarray(normals[sel, 3:]),
-                                 radius[sel], surface_ids(d, np.stack([face_a[sel], face_b[sel]], axis=1)))
+                                 radius[sel], surface_ids(d, faces),
+                                 band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen))
     return out
 
 
 def light_of(ob, matrix):
+    """The Light of a light object, or None for a type FrameData has no kind for. Kinds are the
+    shaders' (shaders/frame_data.json, EL_LIGHT), keyed by Blender's light types."""
     data = ob.data
-    kind = {'SUN': 0, 'POINT': 1, 'SPOT': 2, 'AREA': 3}.get(data.type)
+    kind = shader_specs.load("frame_data.json")["enums"]["EL_LIGHT"].get(data.type)
     if kind is None:
         return None
     m = np.array(matrix, dtype=np.float64)
     direction = -m[:3, 2] / max(np.linalg.norm(m[:3, 2]), 1e-12)
     color = tuple(float(c) * float(data.energy) for c in data.color)
     light = Light(kind, color, tuple(m[:3, 3]), tuple(direction))
-    if kind == 2:
+    if data.type == 'SPOT':
         light.spot_cos = math.cos(data.spot_size / 2.0)
         light.spot_blend = float(data.spot_blend)
     return light

@@ -3,6 +3,7 @@ EdgeLight are shown for it too."""
 import bpy
 
 from . import color_ramp, compat, ui_light
+from .materials import radius_clamps
 from .panel_base import EdgeLightPanel
 from .properties import LINE_TYPES
 
@@ -24,6 +25,11 @@ class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
         layout.use_property_split = True
         layout.active = s.use_rounding
         layout.prop(s, "radius")
+        note = radius_clamp_note(context.material, context.scene)
+        if note:
+            col = layout.column(align=True)
+            for line, icon in zip(note, ('INFO', 'BLANK1')):
+                col.label(text=line, icon=icon)
         # Short labels: the panel is the highlight's, and "Highlight Strength" (the name tooltips
         # and the animation editors show) is cut off at the default panel width.
         layout.prop(s, "K", text="Strength")
@@ -37,6 +43,25 @@ class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
         sub = layout.column()
         sub.active = s.use_custom_shininess
         sub.prop(s, "shininess")
+
+
+def _length(value, scene):
+    units = scene.unit_settings
+    if units.system == 'NONE':
+        return f"{value:.4g}"
+    return bpy.utils.units.to_string(units.system, 'LENGTH', value * units.scale_length, precision=3)
+
+
+def radius_clamp_note(material, scene):
+    """The material panel's lines saying that some edges' faces allow less than the Radius (the
+    clamp of radius_clamp.py, counted when EdgeLight last picked the edges: materials.py); ()
+    when none is clamped or nothing was counted at this radius."""
+    counted = radius_clamps(material)
+    if not counted or not counted[0]:
+        return ()
+    clamped, rounded, smallest = counted
+    # Short lines: a label is cut off past about 27 characters at the default panel width.
+    return (f"{clamped} of {rounded} edges clamped", f"by their faces, min {_length(smallest, scene)}")
 
 
 class EDGELIGHT_OT_ramp_new(bpy.types.Operator):

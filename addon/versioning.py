@@ -12,7 +12,7 @@ import bpy
 from bpy.app.handlers import persistent
 
 from . import color_ramp, materials
-from .properties import SETTINGS_VERSION
+from .properties import K_MAX, SETTINGS_VERSION
 
 STAMP = "settings_version"
 
@@ -41,9 +41,23 @@ def _material_2_to_3(group):
             del group[key]
 
 
+def _material_3_to_4(group):
+    """Layout 4 caps Highlight Strength (`K`) at 1 (properties.K_MAX). Above 1 it drew a band
+    under a pixel wide as the band of K times the radius, and only undid the anti-aliasing of
+    wider ones: so K > 1 becomes K = 1 with the radius times K, the same image where the band is
+    under a pixel and a real wider fillet (still clamped to what its faces allow) where it is not.
+    The stored values are read raw: Blender does not clamp a stored value to the new maximum."""
+    k = group.get("K")
+    if k is None or float(k) <= K_MAX:
+        return
+    radius = float(group.get("radius", group.bl_rna.properties["radius"].default))
+    group.radius = radius * float(k)
+    group.K = K_MAX
+
+
 # kind -> {layout: step from that layout to the next}
 STEPS = {
-    "material": {1: _material_1_to_2, 2: _material_2_to_3},
+    "material": {1: _material_1_to_2, 2: _material_2_to_3, 3: _material_3_to_4},
     "scene": {},
 }
 

@@ -1,34 +1,35 @@
 """Plots and tables from bench/ground_truth.py's CSV (plain python3 with numpy and matplotlib).
 
-    python3 bench/plot_ground_truth.py [out/ground_truth.csv]
+    python3 bench/plot_ground_truth.py [out/ground_truth.csv] [IMAGE_OUT]
 
-Writes out/ground_truth_pareto.png (frame time against error, every method and width; the
-Pareto front of each scene drawn), out/ground_truth_error_curve.png (error against the radius in
-pixels, the wide-edge curve before and after) and out/ground_truth.md (the tables for
-BENCHMARKS.md).
+Writes beside the CSV: ground_truth_pareto.png (frame time against interior error, one panel
+per width, every part and method), ground_truth.md (the tables for BENCHMARKS.md), and
+IMAGE_OUT (default ground_truth_worst.png): for each part at 2 px, the 32 x 32 pixels around
+EdgeLight's largest interior error, as EdgeLight, the fillets and their difference (x4).
 """
 import csv
+import math
 import os
 import sys
 
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 CSV = sys.argv[1] if len(sys.argv) > 1 else os.path.join("out", "ground_truth.csv")
 OUT = os.path.dirname(CSV) or "."
-REF = "reference (bevel 32 segments; 64 spp)"
-TABLE_WIDTHS = (0.3, 1.0, 2.0, 4.0, 8.0)
+WORST = sys.argv[2] if len(sys.argv) > 2 else os.path.join(OUT, "ground_truth_worst.png")
+WORST_WIDTH = 2.0
 
 
 def load():
     rows = []
     with open(CSV) as f:
         for r in csv.DictReader(f):
-            for k in r:
-                if k not in ("scene", "method"):
-                    r[k] = float(r[k])
+            for k in ("width_px", "radius", "time_s", "rmse", "max_err", "psnr_db", "pixels"):
+                r[k] = float(r[k])
             rows.append(r)
     return rows
 
@@ -42,79 +43,96 @@ def pareto(points):
     return front
 
 
+def psnr(by, part, method, width, region):
+    r = by.get((part, method, width, region))
+    return r["psnr_db"] if r is not None and r["pixels"] > 0 else float("nan")
+
+
+def cell(v):
+    return "—" if not math.isfinite(v) else f"{v:.1f}"
+
+
 def main():
     rows = load()
-    scenes = list(dict.fromkeys(r["scene"] for r in rows))
-    methods = [m for m in dict.fromkeys(r["method"] for r in rows) if m != REF]
-    colours = {m: plt.cm.tab10(i % 10) for i, m in enumerate(methods)}
-    by = {(r["scene"], r["method"], r["width_px"]): r for r in rows}
+    parts = list(dict.fromkeys(r["part"] for r in rows))
+    methods = [m for m in dict.fromkeys(r["method"] for r in rows) if not m.startswith("reference")]
     widths = sorted({r["width_px"] for r in rows})
+    by = {(r["part"], r["method"], r["width_px"], r["region"]): r for r in rows}
+    colours = {m: plt.cm.tab10(i % 10) for i, m in enumerate(methods)}
 
-    fig, axes = plt.subplots(1, len(scenes), figsize=(7 * len(scenes), 5.5), squeeze=False)
-    for ax, scene in zip(axes[0], scenes):
+    fig, axes = plt.subplots(1, len(widths), figsize=(5 * len(widths), 5), squeeze=False)
+    for ax, w in zip(axes[0], widths):
         pts = []
         for m in methods:
-            rs = [by[scene, m, w] for w in widths if (scene, m, w) in by]
-            ax.scatter([r["time_s"] * 1e3 for r in rs], [r["rmse_interior"] for r in rs], s=[12 + 10 * r["width_px"] for r in rs],
-                       color=colours[m], label=m, alpha=0.8)
-            pts += [(r["time_s"] * 1e3, r["rmse_interior"]) for r in rs]
+            rs = [by[p, m, w, "interior"] for p in parts if (p, m, w, "interior") in by]
+            ax.scatter([r["time_s"] * 1e3 for r in rs], [r["rmse"] for r in rs], s=14, color=colours[m], label=m, alpha=0.8)
+            pts += [(r["time_s"] * 1e3, r["rmse"]) for r in rs]
+            mean_t = np.mean([r["time_s"] * 1e3 for r in rs])
+            mean_e = np.sqrt(np.mean([r["rmse"] ** 2 for r in rs]))
+            ax.scatter([mean_t], [mean_e], s=120, marker="*", color=colours[m], edgecolor="k")
         front = pareto(pts)
         ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=0.8, label="Pareto front")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("frame time, ms (median of 3)")
-        ax.set_ylabel("RMSE near interior edges (display values)")
-        ax.set_title(f"{scene}: time vs error (marker size ~ radius in px)")
+        ax.set_ylabel("RMSE, interior pixels (display values)")
+        ax.set_title(f"{w:g} px: every part (dots), their RMS (stars)")
         ax.grid(True, which="both", alpha=0.3)
-    axes[0][0].legend(fontsize=8)
+    axes[0][0].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "ground_truth_pareto.png"), dpi=90)
+    fig.savefig(os.path.join(OUT, "ground_truth_pareto.png"), dpi=80)
 
-    fig, axes = plt.subplots(1, len(scenes), figsize=(7 * len(scenes), 5), squeeze=False)
-    for ax, scene in zip(axes[0], scenes):
-        for m in methods:
-            rs = [by[scene, m, w] for w in widths if (scene, m, w) in by]
-            style = "-o" if m in ("EdgeLight", "whole-arc (before)") else ":."
-            ax.plot([r["width_px"] for r in rs], [r["rmse_interior"] for r in rs], style, color=colours[m], label=m)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.axvline(1.0, color="grey", lw=0.8)
-        ax.set_xlabel("fillet radius in pixels (r f / d at the object's centre)")
-        ax.set_ylabel("RMSE near interior edges (display values)")
-        ax.set_title(f"{scene}: error against width")
-        ax.grid(True, which="both", alpha=0.3)
-    axes[0][0].legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "ground_truth_error_curve.png"), dpi=90)
-
-    md = []
-    for scene in scenes:
-        tw = [w for w in widths if any(abs(w - t) < 1e-9 for t in TABLE_WIDTHS)] or widths
-        md += [f"**{scene}**, interior edges: RMSE / max / PSNR (dB), display values; frame time in ms", "",
-               "| method | " + " | ".join(f"{w:g} px" for w in tw) + " | time (ms), " + " / ".join(f"{w:g}" for w in tw) + " |",
-               "|---|" + "---|" * (len(tw) + 1)]
-        for m in methods + [REF]:
-            cells = []
-            for w in tw:
-                r = by.get((scene, m, w))
-                cells.append("—" if r is None or m == REF else
-                             f"{r['rmse_interior']:.4f} / {r['max_err_interior']:.3f} / {r['psnr_db_interior']:.1f}")
-            times = " / ".join(f"{by[scene, m, w]['time_s'] * 1e3:.0f}" for w in tw if (scene, m, w) in by)
-            md.append(f"| {m} | " + " | ".join(cells) + f" | {times} |")
-        md += ["", f"**{scene}**, all pixels near edges (outline included): RMSE / PSNR (dB)", "",
-               "| method | " + " | ".join(f"{w:g} px" for w in tw) + " |", "|---|" + "---|" * len(tw)]
-        for m in methods:
-            cells = [f"{by[scene, m, w]['rmse']:.4f} / {by[scene, m, w]['psnr_db']:.1f}" if (scene, m, w) in by else "—" for w in tw]
-            md.append(f"| {m} | " + " | ".join(cells) + " |")
-        md += ["", f"**{scene}**, error curve (interior RMSE) against width, before and after:", "",
-               "| radius (px) | " + " | ".join(f"{w:g}" for w in widths) + " |", "|---|" + "---|" * len(widths)]
-        for m in ("whole-arc (before)", "EdgeLight", "paper", "reference integral", "off"):
-            md.append(f"| {m} | " + " | ".join(f"{by[scene, m, w]['rmse_interior']:.4f}" if (scene, m, w) in by else "—"
-                                               for w in widths) + " |")
-        md.append("")
+    head = "| part | " + " | ".join(f"{w:g} px" for w in widths) + " |"
+    rule = "|---|" + "---|" * len(widths)
+    md = ["**Interior pixels, PSNR (dB): EdgeLight / highlights off / Bevel modifier 4 segments**", "", head, rule]
+    for p in parts:
+        md.append(f"| {p} | " + " | ".join(
+            f"{cell(psnr(by, p, 'EdgeLight', w, 'interior'))} / {cell(psnr(by, p, 'off', w, 'interior'))}"
+            f" / {cell(psnr(by, p, 'bevel 4', w, 'interior'))}" for w in widths) + " |")
+    for region, title in (("convex", "along convex edges"), ("concave", "along concave edges"),
+                          ("corners", "at corners (where rounded edges meet or end)"),
+                          ("outline", "at the outline (the fillets move it inwards)")):
+        md += ["", f"**{title}, PSNR (dB): EdgeLight / highlights off**", "", head, rule]
+        for p in parts:
+            md.append(f"| {p} | " + " | ".join(
+                f"{cell(psnr(by, p, 'EdgeLight', w, region))} / {cell(psnr(by, p, 'off', w, region))}" for w in widths) + " |")
+    md += ["", "**Frame time (ms, median of 3), RMS over parts of the interior RMSE, per width**", "",
+           "| method | " + " | ".join(f"{w:g} px" for w in widths) + " |", "|---|" + "---|" * len(widths)]
+    for m in methods:
+        cells = []
+        for w in widths:
+            rs = [by[p, m, w, "interior"] for p in parts if (p, m, w, "interior") in by]
+            cells.append(f"{np.median([r['time_s'] for r in rs]) * 1e3:.0f} ms, {np.sqrt(np.mean([r['rmse'] ** 2 for r in rs])):.4f}"
+                         if rs else "—")
+        md.append(f"| {m} | " + " | ".join(cells) + " |")
     with open(os.path.join(OUT, "ground_truth.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     print("\n".join(md))
+    worst_crops(parts)
 
 
-main()
+def display(c):
+    c = np.clip(c, 0.0, 1.0)
+    return np.where(c <= 0.0031308, 12.92 * c, 1.055 * np.power(c, 1.0 / 2.4) - 0.055)
+
+
+def worst_crops(parts, half=16, zoom=4):
+    rows = []
+    for p in parts:
+        tag = os.path.join(OUT, f"gt_{p}_{WORST_WIDTH:g}px")
+        if not os.path.exists(tag + "_EdgeLight.npy"):
+            continue
+        ours, ref = display(np.load(tag + "_EdgeLight.npy")), display(np.load(tag + "_reference.npy"))
+        interior = np.load(tag + "_regions.npz")["interior"]
+        err = np.where(interior, np.abs(ours - ref).max(axis=2), 0.0)
+        y, x = np.unravel_index(np.argmax(err), err.shape)
+        y = int(np.clip(y, half, err.shape[0] - half))
+        x = int(np.clip(x, half, err.shape[1] - half))
+        crop = [a[y - half:y + half, x - half:x + half][::-1] for a in (ours, ref, np.clip(4.0 * np.abs(ours - ref), 0, 1))]
+        rows.append(np.concatenate([np.kron(c, np.ones((zoom, zoom, 1))) for c in crop], axis=1))
+    if rows:
+        plt.imsave(WORST, np.concatenate(rows, axis=0))
+
+
+if __name__ == "__main__":
+    main()

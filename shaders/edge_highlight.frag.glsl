@@ -37,6 +37,22 @@ void main()
    * on a surface that hides its edge, however thin. */
   vec2 id = texelFetch(surface_id, ivec2(pc), 0).rg;
   bool own = id.x == instance_id && id.y > 0.0 && (id.y == edge_faces.x || id.y == edge_faces.y);
+  if (!(id.y > 0.0)) {
+    /* Background: a fillet lies within its part's outline (a convex one inside the solid, a
+     * concave one over its faces), so the band shows past the outline only in the pixels the
+     * part's own edge partly covers: one of the 3x3 around shows this object. */
+    ivec2 size = textureSize(surface_id, 0) - 1;
+    bool fringe = false;
+    for (int dy = -1; dy <= 1; dy++) {
+      for (int dx = -1; dx <= 1; dx++) {
+        vec2 n = texelFetch(surface_id, clamp(ivec2(pc) + ivec2(dx, dy), ivec2(0), size), 0).rg;
+        fringe = fringe || (n.x == instance_id && n.y > 0.0);
+      }
+    }
+    if (!fringe) {
+      discard;
+    }
+  }
   float bias = own ? 3.0e38 : 0.5 * world_per_px + 1e-5 * dist;
 #else
   /* Without ids (the OSMesa renderer): the edge lies on its own surface, whose depth at pixels
@@ -114,6 +130,11 @@ void main()
     float b0 = min(ends.x, ends.y), b1 = max(ends.x, ends.y);
     float pa = max(across - 0.5, b0), pb = min(across + 0.5, b1);
     float cover = clamp(pb - pa, 0.0, 1.0);
+    /* The band's ends on the face this pixel lies over (band_ends.py), each cut filtered over
+     * the pixel's width: two bands meeting on a cut share its pixels exactly. */
+    bool on_f1 = across * edge_far.z >= 0.0;
+    vec2 cut0 = on_f1 ? edge_cut0.xy : edge_cut0.zw, cut1 = on_f1 ? edge_cut1.xy : edge_cut1.zw;
+    cover *= clamp(0.5 + dot(pc - edge_screen.xy, cut0), 0.0, 1.0) * clamp(0.5 + dot(pc - edge_far.xy, cut1), 0.0, 1.0);
     float W = clamp(tint.w * cover, 0.0, 1.0) * ramp;
     vec4 wide = vec4(0.0);
     if (W > 0.0 && b1 > b0) {

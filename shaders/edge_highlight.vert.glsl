@@ -56,6 +56,42 @@ float el_pulled_depth(vec3 at, float half_px)
   return cp.w > 0.0 && z > -1.0 ? z : -1.0;
 }
 
+/* The image of world direction d at the point whose clip position is c, in pixels (up to a
+ * positive factor): the derivative of the perspective divide. */
+vec2 el_screen_dir(vec3 d, vec4 c)
+{
+  vec4 dc = frame.projection * (frame.view * vec4(d, 0.0));
+  return (dc.xy * c.w - c.xy * dc.w) * frame.viewport.xy;
+}
+
+/* A band's cut at an end vertex (band_ends.py), as the unit screen normal of its line pointing to
+ * the band's body. u: along the edge from this end, inside: the face's inside across the edge
+ * (object space), phi: the cut's angle from the edge towards the inside. A cut seen end-on
+ * (along the view ray) is square to the edge's image. */
+vec2 el_cut_normal(vec3 u, vec3 inside, float phi, vec4 c, vec2 along_px)
+{
+  vec3 un = el_safe_normalize(u);
+  vec3 n = el_safe_normalize(inside - dot(inside, un) * un);
+  vec2 line = el_screen_dir(mat3(model) * (cos(phi) * un + sin(phi) * n), c);
+  vec2 body = el_screen_dir(mat3(model) * (sin(phi) * un - cos(phi) * n), c);
+  float len = length(line);
+  if (!(len > 1e-6 * length(body))) {
+    return along_px;
+  }
+  vec2 nrm = vec2(-line.y, line.x) / len;
+  return dot(nrm, body) < 0.0 ? -nrm : nrm;
+}
+
+/* The world point of the edge's line whose image is at lambda along s0 -> s1 (0 and 1: the
+ * ends), perspective-correct; kept within half the edge past either end (an edge seen end-on
+ * has next to no image to reach along). */
+vec3 el_line_point(vec3 w0, vec3 w1, float iw0, float iw1, float lambda)
+{
+  float den = (1.0 - lambda) * iw0 + lambda * iw1;
+  float t = den > 0.0 ? lambda * iw1 / den : lambda;
+  return w0 + clamp(t, -0.5, 1.5) * (w1 - w0);
+}
+
 /* Edge highlight pass: one screen-space quad per rounded edge (no wide GL lines, no geometry
  * shader). corner.x picks the end (0: p0, 1: p1), corner.y the side (-1, +1), corner.z is the
  * radius. The quad reaches half a pixel past the rounded edge's projected band on each side: the
@@ -91,6 +127,26 @@ void main()
   vec2 dir = len > 1e-6 ? along / len : vec2(1.0, 0.0);
   vec2 across = vec2(-dir.y, dir.x);
   edge_screen = vec4(s0, across);
+  /* Where the band ends on each face: a cut through each end vertex in the face's plane
+   * (band_ends.py). N1's face runs p0 -> p1, so its inside is N1 x (p1 - p0); N2's is the other
+   * way round. edge_far.z: which side of the line N1's face lies on, in the image. */
+  vec3 e_obj = p1 - p0;
+  vec3 in1 = cross(n1, e_obj), in2 = cross(e_obj, n2);
+  edge_cut0 = vec4(el_cut_normal(e_obj, in1, ends.x, c0, dir), el_cut_normal(e_obj, in2, ends.y, c0, dir));
+  edge_cut1 = vec4(el_cut_normal(-e_obj, in1, ends.z, c1, -dir), el_cut_normal(-e_obj, in2, ends.w, c1, -dir));
+  float side1 = dot(el_screen_dir(mat3(model) * in1, c0), across) < 0.0 ? -1.0 : 1.0;
+  float side2 = dot(el_screen_dir(mat3(model) * in2, c0), across) < 0.0 ? -1.0 : 1.0;
+  vec3 Vm0 = el_safe_normalize(frame.eye.w > 0.5 ? frame.eye.xyz - 0.5 * (w0 + w1) : -frame.view_dir.xyz);
+  float f1 = dot(el_safe_normalize(edge_n1), Vm0), f2 = dot(el_safe_normalize(edge_n2), Vm0);
+  if (side1 == side2 || min(f1, f2) < 0.1) {
+    /* A silhouette (both faces lie on one side of the line, nothing on the other), or a face
+     * seen edge-on (its cut's image is a guess): the band is cut as on the face that faces the
+     * eye, on both sides. */
+    bool front1 = f1 >= f2;
+    edge_cut0 = front1 ? edge_cut0.xyxy : edge_cut0.zwzw;
+    edge_cut1 = front1 ? edge_cut1.xyxy : edge_cut1.zwzw;
+  }
+  edge_far = vec4(s1, side1, 0.0);
 
   /* Cull before any fragment runs (viewport.visible_edges counts the same tests): both faces
    * turned away (judged at the edge's midpoint, the same for all four corners), or a weight
@@ -143,11 +199,24 @@ void main()
   }
   float offset = corner.y < 0.0 ? lo - 0.5 - 1.0 / 64.0 : hi + 0.5 + 1.0 / 64.0;
 
+  /* Half a pixel past each end, for the cuts' filter: two bands meeting on a cut then share its
+   * pixels exactly. Along the edge's line: still a parallelogram, so edge_point still
+   * interpolates to each pixel's foot on the line. */
+  float past = (0.5 + 1.0 / 64.0) / max(len, 1e-6);
+  world = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, corner.x < 0.5 ? -past : 1.0 + past);
+  c = frame.projection * (frame.view * vec4(world, 1.0));
+  vec3 x0 = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, -past);
+  vec3 x1 = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, 1.0 + past);
+  if (c.w <= 0.0) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    return;
+  }
+
   /* Both ends' pulled depths, so that all four corners agree on whether the edge is tested. */
-  float z0 = el_pulled_depth(w0, half_px), z1 = el_pulled_depth(w1, half_px);
+  float z0 = el_pulled_depth(x0, half_px), z1 = el_pulled_depth(x1, half_px);
   float z = (z0 > -1.0 && z1 > -1.0) ? (corner.x < 0.5 ? z0 : z1) : -1.0;
 
-  vec2 s = (corner.x < 0.5 ? s0 : s1) + across * offset;
+  vec2 s = (c.xy / c.w * 0.5 + 0.5) * frame.viewport.xy + across * offset;
   edge_point = world;
   gl_Position = vec4((s / frame.viewport.xy * 2.0 - 1.0) * c.w, z * c.w, c.w);
 }

@@ -5,8 +5,8 @@
 void light_at(int i, vec3 X, out vec3 L, out vec3 E)
 {
   vec4 c = frame.light_color[i];
-  int type = int(c.w + 0.5);
-  if (type == 0) {
+  int type = int(c.w + 0.5); /* EL_LIGHT_*: shaders/frame_data.json */
+  if (type == EL_LIGHT_SUN) {
     L = -frame.light_direction[i].xyz;
     E = c.rgb;
     return;
@@ -15,12 +15,12 @@ void light_at(int i, vec3 X, out vec3 L, out vec3 E)
   float r2 = max(dot(d, d), 1e-12);
   L = d * inversesqrt(r2);
   float along = dot(-L, frame.light_direction[i].xyz);
-  if (type == 3) {
+  if (type == EL_LIGHT_AREA) {
     E = c.rgb * max(along, 0.0) / (3.14159265 * r2);
     return;
   }
   E = c.rgb / (4.0 * 3.14159265 * r2);
-  if (type == 2) {
+  if (type == EL_LIGHT_SPOT) {
     float cos_edge = frame.light_direction[i].w;
     float blend = frame.light_spot[i].x;
     E *= smoothstep(cos_edge, mix(cos_edge, 1.0, max(blend, 1e-4)), along);

@@ -1,10 +1,10 @@
 /* Surface pass: Blinn-Phong from the material, ambient from the world, or toon shading
  * (toon.glsl), or unlit white (whiteout); writes colour and the inverse view-space depth the edge
- * and line passes test against. The mode is fixed when the program is built (EL_SURFACE_MODE:
- * 0 Blinn-Phong, 1 ramp, 2 X-Toon, 3 whiteout; passes/frame.py builds one per mode in use), so
- * the other modes' code is not in it. */
+ * and line passes test against. The mode is fixed when the program is built (EL_SURFACE_MODE,
+ * one of the EL_SURFACE_MODE_* of shaders/surface_modes.json; passes/frame.py builds one per mode
+ * in use), so the other modes' code is not in it. */
 #ifndef EL_SURFACE_MODE
-#define EL_SURFACE_MODE 0
+#define EL_SURFACE_MODE EL_SURFACE_MODE_PHONG
 #endif
 void main()
 {
@@ -23,7 +23,7 @@ void main()
   out_normal = vec4(front ? normalize(world_nor) : -normalize(world_nor), 1.0);
 #endif
   const int mode = EL_SURFACE_MODE;
-  if (mode == 3) {
+  if (mode == EL_SURFACE_MODE_WHITEOUT) {
     out_color = vec4(1.0, 1.0, 1.0, base_color.a); /* a transparent material stays transparent */
     return;
   }
@@ -32,9 +32,9 @@ void main()
   if (!front) {
     N = -N; /* back faces are shaded as seen (Blender shows both sides) */
   }
-  if (mode == 1 || mode == 2) {
+  if (mode == EL_SURFACE_MODE_RAMP || mode == EL_SURFACE_MODE_XTOON) {
     float x = el_toon_light(N, world_pos);
-    out_color = vec4(mode == 1 ? el_toon_ramp(x) : el_xtoon(x, view_depth, N, V), base_color.a);
+    out_color = vec4(mode == EL_SURFACE_MODE_RAMP ? el_toon_ramp(x) : el_xtoon(x, view_depth, N, V), base_color.a);
     return;
   }
   vec3 albedo = base_color.rgb;

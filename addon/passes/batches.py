@@ -2,6 +2,7 @@
 import gpu
 import numpy as np
 
+from .. import band_ends
 from . import shader_lib
 
 
@@ -56,8 +57,9 @@ def edge_batches(extract):
         corner[::4, 3] = 1.0  # the shading vertex
         corner = corner[order]
         faces = e.faces if e.faces is not None else np.zeros((n, 2), np.float32)
+        ends = e.ends if e.ends is not None else np.full((n, 4), band_ends.SQUARE, np.float32)
         vbo = _vertbuf({"p0": rep(e.p0), "p1": rep(e.p1), "n1": rep(e.n1), "n2": rep(e.n2), "faces": rep(faces),
-                        "corner": corner})
+                        "corner": corner, "ends": rep(ends)})
         edge = np.repeat(np.arange(n), 6)
         idx = vid(edge, np.tile(tris, n)).astype(np.int32).reshape(-1, 3)
         out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))

@@ -12,9 +12,13 @@ import numpy as np
 
 from .. import compat, native
 from .. import lines as ink
-from . import batches, line_pass, shader_lib, table, toon
+from . import batches, line_pass, pass_state, shader_lib, shader_specs, table, toon
 
-MAX_LIGHTS = 16
+# The FrameData block (shaders/frame_data.json): its layout, the light limit and the surface
+# program's modes are read from the one description the shaders are built from.
+FRAME_DATA = shader_specs.Block("frame_data.json")
+MAX_LIGHTS = FRAME_DATA.defines["EL_MAX_LIGHTS"]
+SURFACE_MODES = shader_specs.load("surface_modes.json")["enums"]["EL_SURFACE_MODE"]
 
 # How the edge pass shades bands (shaders/edge_band.glsl). Not a user setting: the ground-truth
 # benchmark (bench/ground_truth.py) sets EDGELIGHT_EDGE_METHOD to render the earlier methods with
@@ -78,29 +82,27 @@ def _mat(m):
 
 
 def frame_data(camera, projection, scene):
+    """The FrameData block's floats (members: shaders/frame_data.json)."""
     lights = scene.lights[:MAX_LIGHTS]
-    color = np.zeros((MAX_LIGHTS, 4), np.float32)
-    position = np.zeros((MAX_LIGHTS, 4), np.float32)
-    direction = np.zeros((MAX_LIGHTS, 4), np.float32)
-    spot = np.zeros((MAX_LIGHTS, 4), np.float32)
-    for i, light in enumerate(lights):
-        color[i] = (*light.color, light.kind)
-        position[i, :3] = light.position
-        direction[i] = (*light.direction, light.spot_cos)
-        spot[i, 0] = light.spot_blend
-    head = np.concatenate([
-        _mat(camera.view), _mat(projection),
-        np.array([*camera.eye, 0.0 if camera.orthographic else 1.0], np.float32),
-        np.array([*camera.view_dir, 0.0], np.float32),
-        np.array([camera.width, camera.height, 1.0 / camera.width, 1.0 / camera.height], np.float32),
-        np.array([*scene.ambient, 1.0], np.float32),
-        np.array([camera.px_per_unit, len(lights), 0.0, 0.0], np.float32),
-    ])
-    return np.concatenate([head, color.ravel(), position.ravel(), direction.ravel(), spot.ravel()])
+    return FRAME_DATA.pack({
+        "view": _mat(camera.view),
+        "projection": _mat(projection),
+        "eye": (*camera.eye, 0.0 if camera.orthographic else 1.0),
+        "view_dir": (*camera.view_dir, 0.0),
+        "viewport": (camera.width, camera.height, 1.0 / camera.width, 1.0 / camera.height),
+        "ambient": (*scene.ambient, 1.0),
+        "camera": (camera.px_per_unit, len(lights), 0.0, 0.0),
+        "light_color": [(*light.color, light.kind) for light in lights],
+        "light_position": [(*light.position, 0.0) for light in lights],
+        "light_direction": [(*light.direction, light.spot_cos) for light in lights],
+        "light_spot": [(light.spot_blend, 0.0, 0.0, 0.0) for light in lights],
+    })
 
 
 class Targets:
-    """Float render targets of one size, reused across samples and frames.
+    """Float render targets of one size (shaders/passes.json: one attribute per target), reused
+    across samples and frames. surface_depth holds 1 / view depth (0 = empty); surface_id which
+    instance and face covers each pixel (first sample, for the edge and line passes).
 
     normal / surface_sum: extra attachments for the Normal and Surface render passes, made only
     when a render asks for them (their programs are variants that write them, so a render
@@ -108,29 +110,26 @@ class Targets:
 
     def __init__(self, width, height, normal=False, surface_sum=False):
         self.size = (width, height)
-        self.surface_color = compat.texture((width, height), 'RGBA32F')
-        self.surface_depth = compat.texture((width, height), 'R32F')  # 1 / view depth; 0 = empty
-        self.depth = compat.texture((width, height), 'DEPTH_COMPONENT32F')
-        self.highlight = compat.texture((width, height), 'RGBA32F')
-        self.result = compat.texture((width, height), 'RGBA32F')
-        self.lines = compat.texture((width, height), 'RGBA32F')
-        self.line_depth = compat.texture((width, height), 'DEPTH_COMPONENT32F')
-        # Which instance and face covers each pixel (first sample, when lines are drawn).
-        self.surface_id = compat.texture((width, height), 'RG32F')
-        self.normal = compat.texture((width, height), 'RGBA32F') if normal else None  # world normal; 0 = empty
-        self.surface_sum = compat.texture((width, height), 'RGBA32F') if surface_sum else None  # sample mean
-        extra = (self.normal,) if normal else ()
-        self.surface_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.surface_color, self.surface_depth, *extra))
-        # The same with the ids after the other outputs (program outputs follow their defines'
-        # sorted order: EL_NORMAL_PASS, then EL_SURFACE_IDS).
-        self.surface_ids_fb = gpu.types.GPUFrameBuffer(
-            depth_slot=self.depth, color_slots=(self.surface_color, self.surface_depth, *extra, self.surface_id))
-        # The surface pass's depth: the edge pass depth-tests against it (read only).
-        self.highlight_fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.highlight,))
-        extra = (self.surface_sum,) if surface_sum else ()
-        self.result_fb = gpu.types.GPUFrameBuffer(color_slots=(self.result, *extra))
+        wanted = {"normal": normal, "surface_sum": surface_sum}
+        for name in pass_state.target_names():
+            setattr(self, name, pass_state.texture(name, self.size) if wanted.get(name, True) else None)
+        self.surface_fb = pass_state.framebuffer(self, "surface", surface_outputs(self, ids=False))
+        self.surface_ids_fb = pass_state.framebuffer(self, "surface", surface_outputs(self, ids=True))
+        self.highlight_fb = pass_state.framebuffer(self, "edge_highlight")
+        self.result_fb = pass_state.framebuffer(self, "composite", composite_outputs(self))
         self.line_fb = gpu.types.GPUFrameBuffer(depth_slot=self.line_depth, color_slots=(self.lines,))
         self.lines_empty = False  # the line target holds no stroke (cleared, none drawn since)
+
+
+def surface_outputs(targets, ids):
+    """Defines of the surface variant that also writes the Normal pass (when `targets` has its
+    target) and which instance and face covers each pixel (`ids`)."""
+    return {**({"EL_NORMAL_PASS": 1} if targets.normal is not None else {}), **({"EL_SURFACE_IDS": 1} if ids else {})}
+
+
+def composite_outputs(targets):
+    """Defines of the composite variant that also writes the Surface pass when asked for."""
+    return {"EL_SURFACE_PASS": 1} if targets.surface_sum is not None else {}
 
 
 @dataclass
@@ -150,28 +149,25 @@ class Stats:
     lines_drawn: int = 0
 
 
-def _shading_uniforms(shader, s, specular=True):
-    shader.uniform_float("base_color", (*s.base_color, s.alpha))
-    if specular:  # toon and whiteout surfaces have none (their programs drop spec_color)
-        shader.uniform_float("spec_color", (*s.spec_color, s.shininess))
+def _shading_uniforms(shader, s):
+    shader_lib.set_uniform(shader, "base_color", (*s.base_color, s.alpha))
+    shader_lib.set_uniform(shader, "spec_color", (*s.spec_color, s.shininess))
 
 
 def _surface_mode(s, whiteout):
-    """The surface program's shading (toon.glsl): 0 Blinn-Phong, 1 ramp, 2 X-Toon, 3 whiteout."""
-    return 3 if whiteout else int(s.toon.mode)
+    """The surface program's shading mode (shaders/surface_modes.json): the material's
+    (toon.mode: materials.py), or WHITEOUT."""
+    return SURFACE_MODES["WHITEOUT"] if whiteout else int(s.toon.mode)
 
 
 def _toon_uniforms(shader, s, mode):
-    """Only what the mode's program reads: the compiler drops the rest, and setting a uniform
-    it dropped is an error."""
-    if mode not in (1, 2):
-        return
+    """The toon parameters, and the texture of a ramp or X-Toon mode."""
     t = s.toon
-    shader.uniform_float("toon", (float(mode), t.near, t.far, (1.0 if t.smooth else 0.0) + (2.0 if t.orientation else 0.0)))
-    if mode == 1:
-        shader.uniform_sampler("toon_ramp", toon.ramp_texture(t))
-    else:
-        shader.uniform_sampler("toon_map", toon.map_texture(t, s.base_color))
+    shader_lib.set_uniform(shader, "toon", (float(mode), t.near, t.far, (1.0 if t.smooth else 0.0) + (2.0 if t.orientation else 0.0)))
+    if mode == SURFACE_MODES["RAMP"]:
+        shader_lib.set_sampler(shader, "toon_ramp", toon.ramp_texture(t))
+    elif mode == SURFACE_MODES["XTOON"]:
+        shader_lib.set_sampler(shader, "toon_map", toon.map_texture(t, s.base_color))
 
 
 def slot_first_ids(extract):
@@ -198,82 +194,57 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False):
             s = gm.extract.slot_shading[slot]
             draws.setdefault(_surface_mode(s, whiteout), []).append(
                 (inst.matrix, s, batch, (float(index + 1), float(first.get(slot, 0)))))
-    fb = targets.surface_ids_fb if ids else targets.surface_fb
-    with fb.bind():
-        fb.clear(color=(0.0, 0.0, 0.0, 0.0), depth=1.0)
-        gpu.state.depth_test_set('LESS_EQUAL')
-        gpu.state.depth_mask_set(True)
-        gpu.state.blend_set('NONE')
-        gpu.state.face_culling_set('NONE')
-        normal = {"EL_NORMAL_PASS": 1} if targets.normal is not None else {}
-        with_ids = {"EL_SURFACE_IDS": 1} if ids else {}
+    outputs = surface_outputs(targets, ids)
+    with pass_state.drawing("surface", targets.surface_ids_fb if ids else targets.surface_fb):
         for mode, items in sorted(draws.items()):
-            shader = shader_lib.get("surface", {"EL_SURFACE_MODE": mode, **normal, **with_ids})
+            shader = shader_lib.get("surface", {"EL_SURFACE_MODE": mode, **outputs})
             shader.bind()
             shader.uniform_block("frame", ubo)
             for matrix, s, batch, surface_ids in items:
-                shader.uniform_float("model", _mat(matrix))
-                if ids:
-                    shader.uniform_float("surface_ids", surface_ids)
-                _shading_uniforms(shader, s, specular=mode == 0)
+                shader_lib.set_uniform(shader, "model", _mat(matrix))
+                shader_lib.set_uniform(shader, "surface_ids", surface_ids)
+                _shading_uniforms(shader, s)
                 _toon_uniforms(shader, s, mode)
                 batch.draw(shader)
-        gpu.state.depth_test_set('NONE')
-        gpu.state.depth_mask_set(False)
 
 
 def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
-    tex, params = table.table()
+    tex, info = table.table()
     # The table layout and the edge method are fixed in the program (highlight_arc.glsl).
-    defines = {"EL_TABLE_LAYOUT": int(params[0]), "EL_EDGE_METHOD": int(edge_method())}
+    defines = {**pass_state.table_defines("edge_highlight", info), "EL_EDGE_METHOD": int(edge_method())}
     if edge_floor():
         defines["EL_EDGE_FLOOR"] = 1
     defines["EL_EDGE_IDS"] = 1  # the surface pass wrote ids: visibility by face (docs/lines.md)
     shader = shader_lib.get("edge_highlight", defines)
-    with targets.highlight_fb.bind():
-        targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
-        gpu.state.blend_set('ALPHA_PREMULT')
-        # Hidden pixels fail before the fragment shader (the vertex shader pulls the quads toward
-        # the eye past the shader's own visibility bias); no depth writes.
-        gpu.state.depth_test_set('LESS_EQUAL')
-        gpu.state.depth_mask_set(False)
+    with pass_state.drawing("edge_highlight", targets.highlight_fb):
         shader.bind()
         shader.uniform_block("frame", ubo)
-        shader.uniform_sampler("cos_power_table", tex)
-        shader.uniform_sampler("surface_depth", targets.surface_depth)
-        shader.uniform_sampler("surface_id", targets.surface_id)
-        if edge_method() != EDGE_METHODS["quadrature"]:  # reads no table: its program drops the uniform
-            shader.uniform_float("table_params", (*params[:3], 0.0))
+        pass_state.bind_table(shader, "edge_highlight", tex, info)
+        pass_state.bind_inputs(shader, "edge_highlight", targets)
         for index, inst in enumerate(scene.instances):
             gm = gpu_meshes[id(inst.mesh)]
             if not gm.edges:
                 continue
-            shader.uniform_float("model", _mat(inst.matrix))
-            shader.uniform_float("instance_id", float(index + 1))
+            shader_lib.set_uniform(shader, "model", _mat(inst.matrix))
+            shader_lib.set_uniform(shader, "instance_id", float(index + 1))
             for slot, batch in gm.edges.items():
                 s = gm.extract.slot_shading[slot]
                 _shading_uniforms(shader, s)
-                shader.uniform_float("tint", (*s.tint, s.K))
+                shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
                 batch.draw(shader)
                 stats.edges_drawn += len(gm.extract.edges[slot])
-        gpu.state.depth_test_set('NONE')
-        gpu.state.blend_set('NONE')
 
 
 def draw_composite(targets, background, full_screen, weight):
     """Adds weight x the composited sample to the result (cleared by the caller), and the
     surface alone to surface_sum when the Surface pass is asked for."""
-    shader = shader_lib.get("composite", {"EL_SURFACE_PASS": 1} if targets.surface_sum is not None else None)
-    with targets.result_fb.bind():
-        gpu.state.blend_set('ADDITIVE_PREMULT')
+    shader = shader_lib.get("composite", composite_outputs(targets))
+    with pass_state.drawing("composite", targets.result_fb):
         shader.bind()
-        shader.uniform_sampler("surface_color", targets.surface_color)
-        shader.uniform_sampler("highlight_color", targets.highlight)
-        shader.uniform_sampler("line_color", targets.lines)
-        shader.uniform_float("background", background)
-        shader.uniform_float("weight", weight)
+        pass_state.bind_inputs(shader, "composite", targets)
+        shader_lib.set_uniform(shader, "background", background)
+        shader_lib.set_uniform(shader, "weight", weight)
         full_screen.draw(shader)
-        gpu.state.blend_set('NONE')
 
 
 def read(texture, width, height, channels=4):
@@ -470,8 +441,8 @@ def unbind_targets():
     shader = shader_lib.get("composite")
     with fb.bind():
         shader.bind()
-        for name in ("surface_color", "highlight_color", "line_color"):
-            shader.uniform_sampler(name, tiny)
-        shader.uniform_float("background", (0.0, 0.0, 0.0, 0.0))
-        shader.uniform_float("weight", 0.0)
+        for _, name in shader_specs.program("composite")["samplers"]:
+            shader_lib.set_sampler(shader, name, tiny)
+        shader_lib.set_uniform(shader, "background", (0.0, 0.0, 0.0, 0.0))
+        shader_lib.set_uniform(shader, "weight", 0.0)
         batches.fullscreen_batch().draw(shader)

@@ -2,32 +2,26 @@
 
 Programs are created lazily, inside a GPU context (render() or view_draw()), and cached for the
 life of the add-on; sources are read from the `shaders` folder beside the package (installed
-layout) or at the repository root (development tree).
+layout) or at the repository root (development tree). A typedef that is a JSON spec
+(frame_data.json) becomes GLSL here (shader_specs.typedef_glsl).
 """
-import json
 import os
 
 import gpu
 
+from . import shader_specs
+from .shader_specs import shader_dir
+
 _cache = {}
-
-
-def shader_dir():
-    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    for candidate in (os.path.join(here, "shaders"), os.path.join(os.path.dirname(here), "shaders")):
-        if os.path.isfile(os.path.join(candidate, "programs.json")):
-            return candidate
-    raise FileNotFoundError(f"EdgeLight shaders not found beside {here}")
+# id(program) -> (its declared push constants, those its compiler kept, its declared samplers).
+_names = {}
 
 
 def _read(name):
+    if name.endswith(".json"):
+        return shader_specs.typedef_glsl(name)
     with open(os.path.join(shader_dir(), name), encoding="utf-8") as f:
         return f.read()
-
-
-def program_description(name):
-    with open(os.path.join(shader_dir(), "programs.json"), encoding="utf-8") as f:
-        return json.load(f)[name]
 
 
 def get(name, defines=None):
@@ -37,8 +31,43 @@ def get(name, defines=None):
     key = (name, tuple(sorted((defines or {}).items())))
     shader = _cache.get(key)
     if shader is None:
-        shader = _cache[key] = _build(name, program_description(name), defines or {})
+        d = shader_specs.program(name)
+        shader = _cache[key] = _build(name, d, defines or {})
+        declared = [var for _, var in d["push_constants"]]
+        _names[id(shader)] = (frozenset(declared), frozenset(v for v in declared if _kept(shader, v)),
+                              frozenset(var for _, var in d["samplers"]))
     return shader
+
+
+def set_uniform(shader, name, value):
+    """Sets push constant `name` of a program from get() if its variant's compiler kept it.
+
+    A variant's compiler drops what its code does not read (spec_color in a toon surface,
+    table_params in an edge method without the table), and Blender refuses to set a dropped
+    uniform; the callers set everything the pass has and need not know which variant reads what.
+    A name programs.json does not declare for the program is still an error."""
+    declared, kept, _ = _names[id(shader)]
+    if name not in declared:
+        raise KeyError(f"EdgeLight: the program declares no push constant '{name}'")
+    if name in kept:
+        shader.uniform_float(name, value)
+
+
+def set_sampler(shader, name, texture):
+    """Binds `texture` to sampler `name` of a program from get(). Blender checks no sampler name
+    (an unknown one binds outside the texture units, and 5.x crashes on that later), so the name
+    is checked against programs.json here. A sampler the compiler dropped is bound harmlessly."""
+    if name not in _names[id(shader)][2]:
+        raise KeyError(f"EdgeLight: the program declares no sampler '{name}'")
+    shader.uniform_sampler(name, texture)
+
+
+def _kept(shader, name):
+    try:
+        shader.uniform_from_name(name)
+    except ValueError:  # "uniform not found": the compiler dropped it
+        return False
+    return True
 
 
 def _build(name, d, defines):
@@ -62,11 +91,8 @@ def _build(name, d, defines):
     info.vertex_out(iface)
     for slot, (type_name, var) in enumerate(d["samplers"]):
         info.sampler(slot, type_name, var)
-    outs = list(d["fragment_out"])
-    for define, extra in sorted(d.get("fragment_out_if", {}).items()):
-        if define in defines:  # an output only a variant has (a render pass asked for)
-            outs += extra
-    for slot, (type_name, var) in enumerate(outs):
+    # Outputs a variant adds (a render pass asked for) follow the program's own.
+    for slot, (type_name, var) in enumerate(shader_specs.fragment_outputs(name, defines)):
         info.fragment_out(slot, type_name, var)
     info.vertex_source("\n".join(_read(f) for f in d["vertex"]))
     info.fragment_source("\n".join(_read(f) for f in d["fragment"]))
@@ -78,3 +104,4 @@ def _build(name, d, defines):
 
 def clear():
     _cache.clear()
+    _names.clear()

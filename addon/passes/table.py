@@ -8,15 +8,16 @@ _state = {}
 
 
 def table(lib=None):
-    """(texture, params): params = (layout, m_max, warp_c, 0); the edge pass puts its method in w."""
+    """(texture, info): info is the table's el_table_info by field name, from which the edge pass
+    takes its defines and push constants (shaders/passes.json)."""
     if "texture" not in _state:
         t = native.HighlightTable(lib=lib)  # the library's recommended default (docs/highlight_math.md)
         info = t.info()
         data = np.ascontiguousarray(t.data(), dtype=np.float32)
         buf = gpu.types.Buffer('FLOAT', data.size, data.ravel())
         _state["texture"] = compat.texture((info["phi_count"], info["m_count"]), 'R32F', buf)
-        _state["params"] = (float(info["layout"]), float(info["m_max"]), float(info["warp_c"]), 0.0)
-    return _state["texture"], _state["params"]
+        _state["info"] = info
+    return _state["texture"], _state["info"]
 
 
 def clear():

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -121,6 +122,7 @@ EdgeQuads edge_quads(const EdgeSet& edges, float radius, Provoking provoking) {
     q.n2.resize(12 * n);
     q.corner.resize(16 * n);
     q.faces.assign(8 * n, 0.0f);
+    q.ends.assign(16 * n, float(std::numbers::pi / 2.0));
     for (size_t i = 0; i < n; ++i) {
         for (uint32_t c = 0; c < 4; ++c) {
             const size_t s = slot(i, c);

@@ -30,6 +30,9 @@ struct EdgeQuads {
     // 2 per vertex: the surface ids of the edge's faces, all 0 here: this renderer writes no id
     // image, and its edge program is built without EL_EDGE_IDS (depth decides visibility).
     std::vector<float> faces;
+    // 4 per vertex: where the band ends on each face (the add-on's band_ends.py); square ends
+    // (pi / 2) here: this renderer does not read polygons.
+    std::vector<float> ends;
     std::vector<uint32_t> indices;      // 6 per edge
 };
 

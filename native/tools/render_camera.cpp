@@ -6,21 +6,20 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace el_tools {
 namespace {
 
-constexpr int kMaxLights = 16;  // EL_MAX_LIGHTS in shaders/frame_data.glsl
-
-void push_mat(std::vector<float>& out, const glm::dmat4& m) {
+std::vector<float> floats(const glm::dmat4& m) {
+    std::vector<float> out;
     for (int c = 0; c < 4; ++c) {  // glm is column-major, as std140 wants
         for (int r = 0; r < 4; ++r) out.push_back(float(m[c][r]));
     }
+    return out;
 }
 
-void push_vec(std::vector<float>& out, double x, double y, double z, double w) {
-    out.insert(out.end(), {float(x), float(y), float(z), float(w)});
-}
+std::vector<float> floats(double x, double y, double z, double w) { return {float(x), float(y), float(z), float(w)}; }
 
 double halton(int i, int base) {
     double f = 1.0, r = 0.0;
@@ -66,31 +65,25 @@ glm::dmat4 jittered_projection(const glm::dmat4& projection, int width, int heig
     return t * projection;
 }
 
-std::vector<float> frame_data(const Camera& camera, const glm::dmat4& projection, const std::vector<Sun>& suns,
-                              const glm::dvec3& ambient) {
-    if (suns.size() > size_t(kMaxLights)) throw std::invalid_argument("at most 16 lights");
-    std::vector<float> out;
-    push_mat(out, camera.view());
-    push_mat(out, projection);
-    push_vec(out, camera.eye.x, camera.eye.y, camera.eye.z, 1.0);  // w = 1: perspective
+std::vector<float> frame_data(const Block& layout, const Camera& camera, const glm::dmat4& projection,
+                              const std::vector<Sun>& suns, const glm::dvec3& ambient) {
+    const int max_lights = layout.define("EL_MAX_LIGHTS");
+    if (suns.size() > size_t(max_lights)) throw std::invalid_argument("at most " + std::to_string(max_lights) + " lights");
+    std::vector<float> out = layout.zeros();
+    layout.set(out, "view", floats(camera.view()));
+    layout.set(out, "projection", floats(projection));
+    layout.set(out, "eye", floats(camera.eye.x, camera.eye.y, camera.eye.z, 1.0));  // w = 1: perspective
     const glm::dvec3 d = camera.view_dir();
-    push_vec(out, d.x, d.y, d.z, 0.0);
-    push_vec(out, camera.width, camera.height, 1.0 / camera.width, 1.0 / camera.height);
-    push_vec(out, ambient.x, ambient.y, ambient.z, 1.0);
-    push_vec(out, camera.px_per_unit(), double(suns.size()), 0.0, 0.0);
-    std::vector<float> color(4 * kMaxLights, 0.0f), position(4 * kMaxLights, 0.0f), direction(4 * kMaxLights, 0.0f),
-        spot(4 * kMaxLights, 0.0f);
+    layout.set(out, "view_dir", floats(d.x, d.y, d.z, 0.0));
+    layout.set(out, "viewport", floats(camera.width, camera.height, 1.0 / camera.width, 1.0 / camera.height));
+    layout.set(out, "ambient", floats(ambient.x, ambient.y, ambient.z, 1.0));
+    layout.set(out, "camera", floats(camera.px_per_unit(), double(suns.size()), 0.0, 0.0));
+    const double sun = layout.define("EL_LIGHT_SUN");
     for (size_t i = 0; i < suns.size(); ++i) {
         const glm::dvec3 dir = -glm::normalize(suns[i].to_light);  // where the light points
-        color[4 * i + 0] = float(suns[i].color.x);
-        color[4 * i + 1] = float(suns[i].color.y);
-        color[4 * i + 2] = float(suns[i].color.z);
-        color[4 * i + 3] = 0.0f;  // kind 0: sun
-        direction[4 * i + 0] = float(dir.x);
-        direction[4 * i + 1] = float(dir.y);
-        direction[4 * i + 2] = float(dir.z);
+        layout.set(out, "light_color", floats(suns[i].color.x, suns[i].color.y, suns[i].color.z, sun), i);
+        layout.set(out, "light_direction", floats(dir.x, dir.y, dir.z, 0.0), i);
     }
-    for (const auto* a : {&color, &position, &direction, &spot}) out.insert(out.end(), a->begin(), a->end());
     return out;
 }
 

@@ -1,6 +1,9 @@
-// The camera, lights and the FrameData uniform block of shaders/frame_data.glsl, packed as
-// addon/passes/frame.py's frame_data() packs them (std140, column-major matrices).
+// The camera, lights and the FrameData uniform block: its members as shaders/frame_data.json
+// lays them out, filled as addon/passes/frame.py's frame_data() fills them (column-major
+// matrices).
 #pragma once
+
+#include "typedef_spec.hpp"
 
 #include <glm/glm.hpp>
 
@@ -46,8 +49,9 @@ struct Box {
 };
 Box bounding_box(const std::vector<float>& xyz);
 
-// The FrameData block's floats (std140: 308 of them).
-std::vector<float> frame_data(const Camera& camera, const glm::dmat4& projection, const std::vector<Sun>& suns,
-                              const glm::dvec3& ambient);
+// The FrameData block's floats; `layout` is shaders/frame_data.json's. Throws past its
+// EL_MAX_LIGHTS lights.
+std::vector<float> frame_data(const Block& layout, const Camera& camera, const glm::dmat4& projection,
+                              const std::vector<Sun>& suns, const glm::dvec3& ambient);
 
 }  // namespace el_tools

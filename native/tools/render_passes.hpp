@@ -1,7 +1,8 @@
 // The add-on's frame (addon/passes/frame.py) in plain OpenGL: per jittered sample a surface
 // pass, on the first sample the edge highlight pass into a premultiplied target, and a composite
-// added into the result with weight 1 / samples. Needs a current GL 4.5 core context
-// (OsmesaContext).
+// added into the result with weight 1 / samples. Targets, pass state and the table's use come
+// from shaders/passes.json, FrameData's layout from frame_data.json, as in the add-on. Needs a
+// current GL 4.5 core context (OsmesaContext).
 #pragma once
 
 #include "gl_objects.hpp"
@@ -38,8 +39,8 @@ struct Scene {
     // for one point), 2 the paper's 1-pixel line, 3 as 0 by brute-force quadrature.
     int edge_method = 0;
     // The edge pass depth-tests its quads against the surface pass so hidden pixels skip the
-    // fragment shader (as the add-on does); off only to check that this rejects nothing the
-    // shader's own visibility test keeps.
+    // fragment shader (its state in shaders/passes.json); off only to check that this rejects
+    // nothing the shader's own visibility test keeps.
     bool edge_depth_test = true;
     // Edge quads fitted to the side of the line where the band lies (as the add-on draws them);
     // off only to check that against quads symmetric about the line.

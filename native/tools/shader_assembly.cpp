@@ -1,6 +1,7 @@
 // programs.json -> GLSL, mapping each GPUShaderCreateInfo call of addon/passes/shader_lib.py to
 // the declaration Blender's GL backend generates for it:
-//   typedef_source       -> the typedef files, verbatim, before any resource
+//   typedef_source       -> the typedef files, verbatim, before any resource; a JSON typedef
+//                           spec (frame_data.json) as the GLSL typedef_spec.cpp writes from it
 //   uniform_buf(s, T, v) -> layout(std140, binding = s) uniform T_v_block { T v; };
 //   push_constant(T, v)  -> uniform T v;           (Blender's GL backend does the same)
 //   vertex_in(i, T, v)   -> layout(location = i) in T v;
@@ -9,6 +10,8 @@
 //   sampler(i, T, v)     -> layout(binding = i) uniform sampler2D v;   (texture unit i)
 //   fragment_out(i, T, v)-> layout(location = i) out T v;
 #include "shader_assembly.hpp"
+
+#include "typedef_spec.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -67,11 +70,33 @@ std::vector<ProgramInterface::Var> vars(const json& list) {
     return out;
 }
 
+bool ends_with(const std::string& s, const std::string& end) {
+    return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+}
+
 std::string join_files(const std::string& dir, const json& files) {
     std::string out;
     for (const auto& f : files) {
         const std::string name = f.get<std::string>();
-        out += "/* ---- " + name + " ---- */\n" + read_text(dir + "/" + name) + "\n";
+        const std::string text = ends_with(name, ".json") ? typedef_glsl(dir, name) : read_text(dir + "/" + name);
+        out += "/* ---- " + name + " ---- */\n" + text + "\n";
+    }
+    return out;
+}
+
+// fragment_out, then the outputs of each fragment_out_if whose define is set, in the defines'
+// sorted order (as addon/passes/shader_specs.py's fragment_outputs).
+std::vector<ProgramInterface::Var> fragment_outputs(const json& d, const std::vector<std::pair<std::string, std::string>>& defines) {
+    auto out = vars(list_of(d, "fragment_out"));
+    const auto it = d.find("fragment_out_if");
+    if (it == d.end()) return out;
+    for (const auto& [define, extra] : it->items()) {  // nlohmann::json objects iterate sorted by key
+        for (const auto& [name, value] : defines) {
+            if (name == define) {
+                for (auto& v : vars(extra)) out.push_back(v);
+                break;
+            }
+        }
     }
     return out;
 }
@@ -131,7 +156,7 @@ AssembledProgram assemble_program(const std::string& shader_dir, const std::stri
         p.iface.push_constants = vars(list_of(d, "push_constants"));
         p.iface.vertex_in = vars(list_of(d, "vertex_in"));
         p.iface.samplers = vars(list_of(d, "samplers"));
-        p.iface.fragment_out = vars(list_of(d, "fragment_out"));
+        p.iface.fragment_out = fragment_outputs(d, defines);
 
         std::string define_lines;
         for (const auto& [name, value] : defines) define_lines += "#define " + name + " " + value + "\n";

@@ -39,8 +39,9 @@ inline constexpr const char* kGlslVersion = "#version 430 core";
 
 // Reads `shader_dir`/programs.json and the program's files. `defines` become #define lines after
 // the version, as GPUShaderCreateInfo.define() does in the add-on (EL_TABLE_LAYOUT,
-// EL_EDGE_METHOD: shaders/highlight_arc.glsl, edge_band.glsl). Throws std::runtime_error naming
-// the program, file or type that is missing or unknown.
+// EL_EDGE_METHOD: shaders/highlight_arc.glsl, edge_band.glsl), and a define named in the
+// program's fragment_out_if adds its outputs. Throws std::runtime_error naming the program, file
+// or type that is missing or unknown.
 AssembledProgram assemble_program(const std::string& shader_dir, const std::string& program,
                                   const std::vector<std::pair<std::string, std::string>>& defines = {});
 

@@ -10,27 +10,13 @@ import ctypes
 import json
 import os
 import subprocess
-import sys
 import unittest
 
 import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from addon_modules import addon_module
 
-
-def _addon_module(name):
-    """addon/NAME imported as part of its package, without running the package's __init__
-    (which registers with Blender): native.py imports no bpy."""
-    import importlib.machinery
-    import importlib.util
-    if "edgelight" not in sys.modules:
-        pkg = importlib.util.module_from_spec(importlib.machinery.ModuleSpec("edgelight", None, is_package=True))
-        pkg.__path__ = [os.path.join(ROOT, "addon")]
-        sys.modules["edgelight"] = pkg
-    return importlib.import_module("edgelight." + name)
-
-
-native = _addon_module("native")
+native = addon_module("native")  # imports no bpy
 
 # Constants the binding does not mirror, and why.
 NOT_MIRRORED = {

@@ -183,13 +183,13 @@ class SettingsSurviveSaveAndReload(unittest.TestCase):
         import tempfile
         helpers.open_sample("cube", samples=5)
         s = bpy.data.materials["Cube"].edgelight
-        s.K, s.radius, s.tint, s.selection, s.angle = 2.5, 0.033, (0.2, 0.4, 0.6), {'SHARP'}, 0.7
+        s.K, s.radius, s.tint, s.selection, s.angle = 0.75, 0.033, (0.2, 0.4, 0.6), {'SHARP'}, 0.7
         s.use_custom_shininess, s.shininess = True, 123.0
         path = os.path.join(tempfile.mkdtemp(), "roundtrip.blend")
         bpy.ops.wm.save_as_mainfile(filepath=path)
         bpy.ops.wm.open_mainfile(filepath=path)
         s = bpy.data.materials["Cube"].edgelight
-        self.assertAlmostEqual(s.K, 2.5, places=6)
+        self.assertAlmostEqual(s.K, 0.75, places=6)
         self.assertAlmostEqual(s.radius, 0.033, places=6)
         self.assertEqual(tuple(round(c, 6) for c in s.tint), (0.2, 0.4, 0.6))
         self.assertEqual(set(s.selection), {'SHARP'})

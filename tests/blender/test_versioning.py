@@ -36,8 +36,9 @@ class OpensUpgraded(unittest.TestCase):
     def check_values(self):
         cube = bpy.data.materials["Cube"].edgelight
         self.assertFalse(cube.use_rounding, "enabled=False became use_rounding=False")
-        self.assertAlmostEqual(cube.K, 2.5, places=6)
-        self.assertAlmostEqual(cube.radius, 0.033, places=6)
+        # K = 2.5 is past layout 4's cap: K 1 and the radius times 2.5 (versioning._material_3_to_4).
+        self.assertAlmostEqual(cube.K, 1.0, places=6)
+        self.assertAlmostEqual(cube.radius, 0.033 * 2.5, places=6)
         self.assertEqual(tuple(round(c, 6) for c in cube.tint), (0.2, 0.4, 0.6))
         self.assertEqual(set(cube.selection), {'SHARP', 'ANGLE'})
         self.assertAlmostEqual(cube.angle, math.radians(40.0), places=6)

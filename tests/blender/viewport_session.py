@@ -58,6 +58,19 @@ def screenshot(name):
     return px, path
 
 
+def note_area(name, area):
+    """Records where `area` is in screenshot `name` (OUT/areas.json: left, top, right, bottom from
+    the top-left), for scripts/docs_images.py to crop the docs' copy to it."""
+    path, boxes = os.path.join(OUT, "areas.json"), {}
+    if os.path.exists(path):
+        with open(path) as f:
+            boxes = json.load(f)
+    top = bpy.context.window_manager.windows[0].height - (area.y + area.height)
+    boxes[name] = [area.x, top, area.x + area.width, top + area.height]
+    with open(path, "w") as f:
+        json.dump(boxes, f, indent=1)
+
+
 def to_window_pixels(points):
     """World points -> screenshot pixels (bottom-left origin), through the 3D view's matrices."""
     _, _, region = view3d()
@@ -107,6 +120,7 @@ def properties_tabs():
         area.tag_redraw()
         yield 0.5
         px, path = screenshot("properties_" + tab.lower())
+        note_area("properties_" + tab.lower(), area)
         crop = px[area.y:area.y + area.height, area.x:area.x + area.width, :3]
         polls = panel_polls(shown + hidden)
         check(f"{tab.lower()} tab: Blender's panels EdgeLight honours show, the others don't",
@@ -130,6 +144,7 @@ def steps():
 
     # 1. Rendered shading shows the highlight along the cube's glinting edge.
     px, path = screenshot("rendered")
+    note_area("rendered", area)
     lum = px[..., :3] @ np.array([0.2126, 0.7152, 0.0722])
     ts = np.linspace(0.2, 0.8, 9)
     line = to_window_pixels(A[None] + ts[:, None] * (B - A)[None])
@@ -211,6 +226,7 @@ def steps():
     redraw()
     yield 0.5
     after, path = screenshot("lines")
+    note_area("lines", area)
     c7 = counters()
     dark = lambda img: int((img[..., :3].max(axis=2) < 0.02).sum())  # noqa: E731
     check("lines: drawn in the viewport, black ink on screen", c7["lines_drawn"] > 0 and dark(after) > dark(before) + 200,

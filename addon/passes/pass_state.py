@@ -1,0 +1,80 @@
+"""Pass state from shaders/passes.json, for Blender's gpu module: the render targets, a pass's
+framebuffer, what it clears, its fixed-function state, the targets its samplers read, and the
+table's defines and push constants. edgelight-render draws from the same file
+(native/tools/pass_state.cpp), so a change to a pass is made there once."""
+import contextlib
+
+import gpu
+
+from .. import compat
+from . import shader_lib, shader_specs
+
+
+def _spec():
+    return shader_specs.load("passes.json")
+
+
+def _pass(name):
+    return _spec()["passes"][name]
+
+
+def target_names():
+    return list(_spec()["targets"])
+
+
+def texture(name, size):
+    """A new texture for target `name`, in its format."""
+    return compat.texture(size, _spec()["targets"][name])
+
+
+def framebuffer(targets, pass_name, defines=None):
+    """The framebuffer of a pass for the program variant built with `defines`: a colour slot for
+    each of the variant's outputs, in slot order, on the target passes.json names for it (an
+    attribute of `targets`), and the pass's depth target."""
+    p = _pass(pass_name)
+    slots = {"color_slots": tuple(getattr(targets, p["outputs"][var])
+                                  for _, var in shader_specs.fragment_outputs(p["program"], defines))}
+    if "depth_target" in p:
+        slots["depth_slot"] = getattr(targets, p["depth_target"])
+    return gpu.types.GPUFrameBuffer(**slots)
+
+
+@contextlib.contextmanager
+def drawing(pass_name, fb):
+    """Binds `fb`, clears what the pass clears and sets its state; after the pass, depth test,
+    depth writes and blending are back to NONE, False, NONE."""
+    p = _pass(pass_name)
+    with fb.bind():
+        clear = p.get("clear")
+        if clear:
+            fb.clear(**{k: tuple(v) if k == "color" else v for k, v in clear.items()})
+        state = p["state"]
+        gpu.state.depth_test_set(state["depth_test"])
+        gpu.state.depth_mask_set(state["depth_write"])
+        gpu.state.blend_set(state["blend"])
+        gpu.state.face_culling_set(state["face_culling"])
+        try:
+            yield
+        finally:
+            gpu.state.depth_test_set('NONE')
+            gpu.state.depth_mask_set(False)
+            gpu.state.blend_set('NONE')
+
+
+def bind_inputs(shader, pass_name, targets):
+    """Each sampler of the pass on the target it reads (attributes of `targets`)."""
+    for sampler, target in _pass(pass_name)["inputs"].items():
+        shader_lib.set_sampler(shader, sampler, getattr(targets, target))
+
+
+def table_defines(pass_name, info):
+    """{define: value} the pass fixes from the table's el_table_info (`info`: field -> value)."""
+    return {define: int(info[field]) for define, field in _pass(pass_name)["table"]["defines"].items()}
+
+
+def bind_table(shader, pass_name, texture, info):
+    """The table's texture on its sampler, and the push constants made from its el_table_info."""
+    t = _pass(pass_name)["table"]
+    shader_lib.set_sampler(shader, t["sampler"], texture)
+    for name, terms in t["push_constants"].items():
+        shader_lib.set_uniform(shader, name, tuple(float(info[x] if isinstance(x, str) else x) for x in terms))

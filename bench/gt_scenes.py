@@ -1,0 +1,205 @@
+"""Scenes and pixel regions of the highlight's ground truth (bench/ground_truth.py,
+bench/cycles_bevel.py).
+
+Every part is drawn in the fandisk sample's place (its camera, sun and material), scaled into its
+bounding box, smooth-shaded with 30-degree sharp edges. Parts: the samples (`cube`, `fandisk`),
+any libcgal-demo `data/meshes/NAME.off`, and the parts bench/parts.py builds.
+
+Regions: every error is reported over pixels near where the fillets change the image ("all"),
+split into the outline (where a fillet moves the silhouette inwards, which no overlay on the
+sharp mesh can follow) and the interior; the interior is broken down into corners (where rounded
+edges meet or a crease ends or turns: the fillets' corner patches) and the rest, along convex and
+along concave edges."""
+import math
+import os
+import tarfile
+
+import bmesh
+import bpy
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CREASE = math.radians(30.0)
+MASK_DILATE = 3
+
+
+def off_mesh(name):
+    """(vertices, faces) of libcgal-demo's data/meshes/NAME.off (from EDGELIGHT_MESH_DIR or the
+    Debian package's data.tar.gz)."""
+    path = os.path.join(os.environ.get("EDGELIGHT_MESH_DIR", os.path.join(ROOT, "build", "meshes")), name + ".off")
+    if os.path.exists(path):
+        text = open(path).read()
+    else:
+        with tarfile.open("/usr/share/doc/libcgal-dev/data.tar.gz") as tar:
+            text = tar.extractfile(f"data/meshes/{name}.off").read().decode()
+    words = [w for line in text.splitlines() for w in line.split("#")[0].split()]
+    nv, nf = int(words[1]), int(words[2])
+    vals = words[4:]
+    verts = np.array(vals[:3 * nv], float).reshape(nv, 3)
+    faces, k = [], 3 * nv
+    for _ in range(nf):
+        n = int(vals[k])
+        faces.append([int(v) for v in vals[k + 1:k + 1 + n]])
+        k += 1 + n
+    return verts, faces
+
+
+def built_mesh(name):
+    import parts
+    bm = parts.BUILT[name]()
+    verts = np.array([v.co[:] for v in bm.verts], float)
+    faces = [[v.index for v in f.verts] for f in bm.faces]
+    bm.free()
+    return verts, faces
+
+
+def open_scene(name, radius, samples, resolution):
+    """A sample scene, or any other part in the fandisk sample's place."""
+    import parts
+    sample = os.path.join(ROOT, "blend_samples", name + ".blend")
+    bpy.ops.wm.open_mainfile(filepath=sample if os.path.exists(sample) else
+                             os.path.join(ROOT, "blend_samples", "fandisk.blend"))
+    if not os.path.exists(sample):
+        ob = bpy.data.objects["Fandisk"]
+        old = np.array([v.co[:] for v in ob.data.vertices])
+        verts, faces = built_mesh(name) if name in parts.BUILT else off_mesh(name)
+        lo, hi = verts.min(0), verts.max(0)
+        scale = np.ptp(old, 0).max() / np.ptp(verts, 0).max()
+        verts = (verts - 0.5 * (lo + hi)) * scale + 0.5 * (old.min(0) + old.max(0))
+        me = bpy.data.meshes.new(name)
+        me.from_pydata(verts.tolist(), [], faces)
+        me.update()
+        for p in me.polygons:
+            p.use_smooth = True
+        if hasattr(me, "use_auto_smooth"):  # 3.x: smooth faces, sharp creases (as the fandisk sample)
+            me.use_auto_smooth = True
+            me.auto_smooth_angle = CREASE
+        for mat in ob.data.materials:
+            me.materials.append(mat)
+        ob.data = me
+    s = bpy.context.scene
+    s.render.engine = "EDGELIGHT"
+    s.render.resolution_x, s.render.resolution_y = resolution
+    s.render.resolution_percentage = 100
+    s.view_settings.view_transform = 'Standard'
+    s.edgelight.samples = samples
+    for mat in bpy.data.materials:
+        mat.edgelight.radius = radius
+        mat.edgelight.K = 1.0
+    return s
+
+
+def px_per_unit_at_centre(s):
+    """f / d at the meshes' bounding-box centre: a radius times this is its image in pixels."""
+    cam = s.camera
+    f = cam.data.lens / cam.data.sensor_width * s.render.resolution_x
+    pts = [ob.matrix_world @ v.co for ob in s.objects if ob.type == 'MESH' for v in ob.data.vertices]
+    centre = sum(pts, pts[0] * 0.0) / len(pts)
+    return f / (cam.matrix_world.translation - centre).length
+
+
+def display(rgb):
+    c = np.clip(rgb, 0.0, 1.0)
+    return np.where(c <= 0.0031308, 12.92 * c, 1.055 * np.power(c, 1.0 / 2.4) - 0.055)
+
+
+def dilate(mask, k):
+    out = mask.copy()
+    for dy in range(-k, k + 1):
+        for dx in range(-k, k + 1):
+            if dx * dx + dy * dy <= k * k:
+                out |= np.roll(np.roll(mask, dy, 0), dx, 1)
+    return out
+
+
+def _project(s, points):
+    """World points -> (x, y) pixel coordinates, y up (as the render's arrays), and w > 0."""
+    cam = s.camera
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    rx, ry = s.render.resolution_x, s.render.resolution_y
+    proj = np.array(cam.calc_matrix_camera(depsgraph, x=rx, y=ry))
+    view = np.array(cam.matrix_world.inverted())
+    p = np.c_[points, np.ones(len(points))] @ (proj @ view).T
+    front = p[:, 3] > 0
+    xy = (p[:, :2] / np.where(front, p[:, 3], 1.0)[:, None] * 0.5 + 0.5) * np.array([rx, ry])
+    return xy, front
+
+
+def _raster(s, segments, shape):
+    """Pixels the world segments (N, 2, 3) pass through (sampled every half pixel)."""
+    img = np.zeros(shape, bool)
+    if not len(segments):
+        return img
+    a, front_a = _project(s, segments[:, 0])
+    b, front_b = _project(s, segments[:, 1])
+    for p, q in zip(a[front_a & front_b], b[front_a & front_b]):
+        n = int(np.ceil(np.linalg.norm(q - p) * 2.0)) + 1
+        t = np.linspace(0.0, 1.0, n)[:, None]
+        xy = np.floor(p + t * (q - p)).astype(int)
+        ok = (xy[:, 0] >= 0) & (xy[:, 0] < shape[1]) & (xy[:, 1] >= 0) & (xy[:, 1] < shape[0])
+        img[xy[ok, 1], xy[ok, 0]] = True
+    return img
+
+
+def edge_classes(s):
+    """World segments of the rounded edges (faces meeting at more than 30 degrees), convex and
+    concave, and the world points where rounded edges meet or end (corners)."""
+    convex, concave, corners = [], [], []
+    for ob in (o for o in s.objects if o.type == 'MESH'):
+        bm = bmesh.new()
+        bm.from_mesh(ob.data)
+        bm.transform(ob.matrix_world)
+        bm.normal_update()
+        rounded = {e for e in bm.edges if len(e.link_faces) == 2 and e.calc_face_angle(0.0) > CREASE}
+        for e in rounded:
+            (convex if e.is_convex else concave).append([v.co[:] for v in e.verts])
+        for v in bm.verts:
+            mine = [e for e in v.link_edges if e in rounded]
+            if not mine:
+                continue
+            if len(mine) != 2:
+                corners.append(v.co[:])
+                continue
+            d = [(e.other_vert(v).co - v.co).normalized() for e in mine]
+            if d[0].dot(d[1]) > -math.cos(CREASE):  # the crease turns: a corner
+                corners.append(v.co[:])
+        bm.free()
+    arr = lambda x: np.array(x, float).reshape(-1, *np.shape(x)[1:]) if x else np.zeros((0, 2, 3))  # noqa: E731
+    return arr(convex), arr(concave), np.array(corners, float).reshape(-1, 3)
+
+
+def regions(s, changed, covered, width_px):
+    """Boolean pixel masks by region (see the module's docstring). `changed`: where the
+    reference differs from the sharp mesh or EdgeLight draws a band; `covered`: the sharp mesh's
+    coverage."""
+    mask = dilate(changed, MASK_DILATE)
+    reach = MASK_DILATE + int(math.ceil(1.5 * width_px))
+    outline = mask & dilate(dilate(~covered, 1) & covered, reach)
+    convex, concave, corner_pts = edge_classes(s)
+    corner_img = np.zeros(mask.shape, bool)
+    xy, front = _project(s, corner_pts) if len(corner_pts) else (np.zeros((0, 2)), np.zeros(0, bool))
+    xy = np.floor(xy[front]).astype(int)
+    ok = (xy[:, 0] >= 0) & (xy[:, 0] < mask.shape[1]) & (xy[:, 1] >= 0) & (xy[:, 1] < mask.shape[0])
+    corner_img[xy[ok, 1], xy[ok, 0]] = True
+    interior = mask & ~outline
+    corners = interior & dilate(corner_img, reach)
+    along = interior & ~corners
+    near_convex = dilate(_raster(s, convex, mask.shape), reach)
+    near_concave = dilate(_raster(s, concave, mask.shape), reach)
+    return {
+        "all": mask,
+        "interior": interior,
+        "convex": along & near_convex & ~near_concave,
+        "concave": along & near_concave & ~near_convex,
+        "corners": corners,
+        "outline": outline,
+    }
+
+
+def errors(image, reference, m):
+    """RMSE, max and PSNR (dB) of display values over mask m, and its pixel count."""
+    if not m.any():
+        return float("nan"), float("nan"), float("nan"), 0
+    diff = display(image)[m] - display(reference)[m]
+    mse = float(np.mean(diff ** 2))
+    return math.sqrt(mse), float(np.abs(diff).max()), 10.0 * math.log10(1.0 / max(mse, 1e-12)), int(m.sum())
