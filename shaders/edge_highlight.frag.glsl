@@ -130,11 +130,15 @@ void main()
     float b0 = min(ends.x, ends.y), b1 = max(ends.x, ends.y);
     float pa = max(across - 0.5, b0), pb = min(across + 0.5, b1);
     float cover = clamp(pb - pa, 0.0, 1.0);
-    /* The band's ends on the face this pixel lies over (band_ends.py), each cut filtered over
-     * the pixel's width: two bands meeting on a cut share its pixels exactly. */
+    /* The band's ends on the face this pixel lies over (band_ends.py): the pixel's centre on
+     * the body's side of each cut. Two bands meeting on a cut then split its pixels exactly
+     * (a filtered cut would leave a seam: bands blend over each other, they do not add); the
+     * jittered samples antialias the cut as they do the outline. */
     bool on_f1 = across * edge_far.z >= 0.0;
     vec2 cut0 = on_f1 ? edge_cut0.xy : edge_cut0.zw, cut1 = on_f1 ? edge_cut1.xy : edge_cut1.zw;
-    cover *= clamp(0.5 + dot(pc - edge_screen.xy, cut0), 0.0, 1.0) * clamp(0.5 + dot(pc - edge_far.xy, cut1), 0.0, 1.0);
+    if (dot(pc - edge_screen.xy, cut0) < 0.0 || dot(pc - edge_far.xy, cut1) < 0.0) {
+      discard;
+    }
     float W = clamp(tint.w * cover, 0.0, 1.0) * ramp;
     vec4 wide = vec4(0.0);
     if (W > 0.0 && b1 > b0) {

@@ -82,6 +82,22 @@ vec2 el_cut_normal(vec3 u, vec3 inside, float phi, vec4 c, vec2 along_px)
   return dot(nrm, body) < 0.0 ? -nrm : nrm;
 }
 
+/* How far past its end vertex (pixels along the edge's image, outwards) the quad must reach for
+ * the cuts of both faces there (unit normals a, b pointing to the band's body): a cut square to
+ * the edge in its face's plane may lean outwards on screen. `half_px`: the band's reach across,
+ * `cap`: the most it may reach. */
+float el_reach_past(vec2 a, vec2 b, vec2 outward, vec2 across, float half_px, float cap)
+{
+  float r = 1.0 / 64.0;
+  for (int k = 0; k < 2; k++) {
+    vec2 nrm = k == 0 ? a : b;
+    float o = dot(outward, nrm);
+    float need = o < -1e-3 ? half_px * abs(dot(across, nrm)) / -o : cap;
+    r = max(r, min(need, cap));
+  }
+  return r;
+}
+
 /* The world point of the edge's line whose image is at lambda along s0 -> s1 (0 and 1: the
  * ends), perspective-correct; kept within half the edge past either end (an edge seen end-on
  * has next to no image to reach along). */
@@ -199,14 +215,17 @@ void main()
   }
   float offset = corner.y < 0.0 ? lo - 0.5 - 1.0 / 64.0 : hi + 0.5 + 1.0 / 64.0;
 
-  /* Half a pixel past each end, for the cuts' filter: two bands meeting on a cut then share its
-   * pixels exactly. Along the edge's line: still a parallelogram, so edge_point still
-   * interpolates to each pixel's foot on the line. */
-  float past = (0.5 + 1.0 / 64.0) / max(len, 1e-6);
-  world = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, corner.x < 0.5 ? -past : 1.0 + past);
+  /* Past each end as far as a cut there leans outwards on screen (at most the edge's own image
+   * length: an edge seen end-on has no direction to reach along), along the edge's line: still a
+   * parallelogram, so edge_point still interpolates to each pixel's foot on the line. */
+  float side_px = max(abs(lo), abs(hi)) + 0.5;
+  float cap = max(min(2.0 * side_px, len), 1.0 / 64.0);
+  float past0 = el_reach_past(edge_cut0.xy, edge_cut0.zw, -dir, across, side_px, cap) / max(len, 1e-6);
+  float past1 = el_reach_past(edge_cut1.xy, edge_cut1.zw, dir, across, side_px, cap) / max(len, 1e-6);
+  world = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, corner.x < 0.5 ? -past0 : 1.0 + past1);
   c = frame.projection * (frame.view * vec4(world, 1.0));
-  vec3 x0 = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, -past);
-  vec3 x1 = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, 1.0 + past);
+  vec3 x0 = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, -past0);
+  vec3 x1 = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, 1.0 + past1);
   if (c.w <= 0.0) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     return;
