@@ -98,13 +98,14 @@ def main():
                 images[label] = pixels(rec)
                 if label == "EdgeLight":  # where EdgeLight draws a band (its highlight alpha)
                     band = np.asarray(rec["highlight"])[..., 3]
-                if label == "off":  # the sharp mesh's coverage
+                if label == "off":  # the sharp mesh's coverage and depth
                     covered = np.asarray(rec["surface"])[..., 3] > 0.5
+                    inv_depth = np.asarray(rec["depth"])[..., 0]
                 print(f"{name} {width:4.1f}px {label:20s} {times[label]:.3f} s", flush=True)
             s = configure(name, radius, None, 0, 1)  # the sharp part, for its edges' classes
             changed = np.abs(gt_scenes.display(ref) - gt_scenes.display(images["off"])).max(axis=2) > 1.0 / 255.0
             changed |= band > 1.0 / 255.0
-            region = gt_scenes.regions(s, changed, covered, width)
+            region = gt_scenes.regions(s, changed, covered, width, inv_depth)
             tag = f"{name}_{width:g}px"
             np.save(os.path.join(out_dir, f"gt_{tag}_reference.npy"), ref.astype(np.float32))
             np.savez_compressed(os.path.join(out_dir, f"gt_{tag}_regions.npz"), **region)

@@ -6,8 +6,9 @@ bounding box, smooth-shaded with 30-degree sharp edges. Parts: the samples (`cub
 any libcgal-demo `data/meshes/NAME.off`, and the parts bench/parts.py builds.
 
 Regions: every error is reported over pixels near where the fillets change the image ("all"),
-split into the outline (where a fillet moves the silhouette inwards, which no overlay on the
-sharp mesh can follow) and the interior; the interior is broken down into corners (where rounded
+split into the outline (the part's silhouette against the background and where one part of it
+passes in front of another: a fillet moves both inwards, which no overlay on the sharp mesh can
+follow) and the interior; the interior is broken down into corners (where rounded
 edges meet or a crease ends or turns: the fillets' corner patches) and the rest, along convex and
 along concave edges."""
 import math
@@ -168,13 +169,28 @@ def edge_classes(s):
     return arr(convex), arr(concave), np.array(corners, float).reshape(-1, 3)
 
 
-def regions(s, changed, covered, width_px):
+def occluding_contours(inv_depth, jump=0.03):
+    """Pixels next to a jump in depth of more than `jump` (relative) to a neighbour: where one
+    part of the surface passes in front of another (a bore's far wall behind its rim)."""
+    d = np.where(inv_depth > 0.0, 1.0 / np.maximum(inv_depth, 1e-30), 0.0)
+    out = np.zeros(d.shape, bool)
+    for axis in (0, 1):
+        a, b = d, np.roll(d, 1, axis)
+        step = (a > 0) & (b > 0) & (np.abs(a - b) > jump * np.minimum(a, b))
+        out |= step | np.roll(step, -1, axis)
+    return out
+
+
+def regions(s, changed, covered, width_px, inv_depth=None):
     """Boolean pixel masks by region (see the module's docstring). `changed`: where the
     reference differs from the sharp mesh or EdgeLight draws a band; `covered`: the sharp mesh's
-    coverage."""
+    coverage; inv_depth: its 1 / view depth, whose jumps are outlines inside the coverage."""
     mask = dilate(changed, MASK_DILATE)
     reach = MASK_DILATE + int(math.ceil(1.5 * width_px))
-    outline = mask & dilate(dilate(~covered, 1) & covered, reach)
+    edge = dilate(~covered, 1) & covered
+    if inv_depth is not None:
+        edge |= occluding_contours(inv_depth) & covered
+    outline = mask & dilate(edge, reach)
     convex, concave, corner_pts = edge_classes(s)
     corner_img = np.zeros(mask.shape, bool)
     xy, front = _project(s, corner_pts) if len(corner_pts) else (np.zeros((0, 2)), np.zeros(0, bool))

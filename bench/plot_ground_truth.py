@@ -1,11 +1,13 @@
 """Plots and tables from bench/ground_truth.py's CSV (plain python3 with numpy and matplotlib).
 
-    python3 bench/plot_ground_truth.py [out/ground_truth.csv] [IMAGE_OUT]
+    python3 bench/plot_ground_truth.py [out/ground_truth.csv] [IMAGE_OUT] [CYCLES_CSV]
 
 Writes beside the CSV: ground_truth_pareto.png (frame time against interior error, one panel
-per width, every part and method), ground_truth.md (the tables for BENCHMARKS.md), and
+per width: every part and method, each method's mean time and RMS error, their Pareto front), ground_truth.md (the tables for BENCHMARKS.md), and
 IMAGE_OUT (default ground_truth_worst.png): for each part at 2 px, the 32 x 32 pixels around
 EdgeLight's largest interior error, as EdgeLight, the fillets and their difference (x4).
+With CYCLES_CSV (bench/cycles_bevel.py), a table of each method's gain over no rounding against
+its own engine's fillets.
 """
 import csv
 import math
@@ -21,6 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 CSV = sys.argv[1] if len(sys.argv) > 1 else os.path.join("out", "ground_truth.csv")
 OUT = os.path.dirname(CSV) or "."
 WORST = sys.argv[2] if len(sys.argv) > 2 else os.path.join(OUT, "ground_truth_worst.png")
+CYCLES = sys.argv[3] if len(sys.argv) > 3 else None
 WORST_WIDTH = 2.0
 
 
@@ -60,27 +63,33 @@ def main():
     by = {(r["part"], r["method"], r["width_px"], r["region"]): r for r in rows}
     colours = {m: plt.cm.tab10(i % 10) for i, m in enumerate(methods)}
 
-    fig, axes = plt.subplots(1, len(widths), figsize=(5 * len(widths), 5), squeeze=False)
-    for ax, w in zip(axes[0], widths):
-        pts = []
+    cols = 3
+    rows_ = (len(widths) + cols - 1) // cols
+    fig, axes = plt.subplots(rows_, cols, figsize=(5.5 * cols, 4.5 * rows_), squeeze=False)
+    for ax in axes.flat[len(widths):]:
+        ax.axis("off")
+    for ax, w in zip(axes.flat, widths):
+        stars = []
         for m in methods:
             rs = [by[p, m, w, "interior"] for p in parts if (p, m, w, "interior") in by]
-            ax.scatter([r["time_s"] * 1e3 for r in rs], [r["rmse"] for r in rs], s=14, color=colours[m], label=m, alpha=0.8)
-            pts += [(r["time_s"] * 1e3, r["rmse"]) for r in rs]
+            ax.scatter([r["time_s"] * 1e3 for r in rs], [r["rmse"] for r in rs], s=10, color=colours[m], alpha=0.5)
             mean_t = np.mean([r["time_s"] * 1e3 for r in rs])
             mean_e = np.sqrt(np.mean([r["rmse"] ** 2 for r in rs]))
-            ax.scatter([mean_t], [mean_e], s=120, marker="*", color=colours[m], edgecolor="k")
-        front = pareto(pts)
-        ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=0.8, label="Pareto front")
+            ax.scatter([mean_t], [mean_e], s=140, marker="*", color=colours[m], edgecolor="k", label=m)
+            stars.append((mean_t, mean_e))
+        # The front of the methods (their mean time, RMS error over the parts): parts differ too
+        # much in both for a front over single renders to mean anything.
+        front = pareto(stars)
+        ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=0.8, label="Pareto front (methods)")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("frame time, ms (median of 3)")
         ax.set_ylabel("RMSE, interior pixels (display values)")
-        ax.set_title(f"{w:g} px: every part (dots), their RMS (stars)")
+        ax.set_title(f"{w:g} px: each part (dots); mean time, RMS error (stars)")
         ax.grid(True, which="both", alpha=0.3)
-    axes[0][0].legend(fontsize=7)
+    axes.flat[0].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "ground_truth_pareto.png"), dpi=80)
+    fig.savefig(os.path.join(OUT, "ground_truth_pareto.png"), dpi=70)
 
     head = "| part | " + " | ".join(f"{w:g} px" for w in widths) + " |"
     rule = "|---|" + "---|" * len(widths)
@@ -105,6 +114,22 @@ def main():
             cells.append(f"{np.median([r['time_s'] for r in rs]) * 1e3:.0f} ms, {np.sqrt(np.mean([r['rmse'] ** 2 for r in rs])):.4f}"
                          if rs else "—")
         md.append(f"| {m} | " + " | ".join(cells) + " |")
+    if CYCLES:
+        cy = {}
+        with open(CYCLES) as f:
+            for r in csv.DictReader(f):
+                cy[r["part"], r["method"], float(r["width_px"]), r["region"]] = float(r["psnr_db"])
+        cw = sorted({k[2] for k in cy})
+        md += ["", "**Gain over no rounding on interior pixels (dB), each against its own engine's fillets: "
+               "EdgeLight / Cycles' Bevel node (64 spp)**", "",
+               "| part | " + " | ".join(f"{w:g} px" for w in cw) + " |", "|---|" + "---|" * len(cw)]
+        for p in parts:
+            cells = []
+            for w in cw:
+                el = psnr(by, p, "EdgeLight", w, "interior") - psnr(by, p, "off", w, "interior")
+                node = cy.get((p, "Cycles + Bevel node", w, "interior"), float("nan")) - cy.get((p, "Cycles", w, "interior"), float("nan"))
+                cells.append(f"{el:+.1f} / {node:+.1f}" if math.isfinite(el) and math.isfinite(node) else "—")
+            md.append(f"| {p} | " + " | ".join(cells) + " |")
     with open(os.path.join(OUT, "ground_truth.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     print("\n".join(md))
