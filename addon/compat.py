@@ -97,6 +97,10 @@ def write_pass(render_pass, pixels):
 
 
 
+# Blender's Object Index render pass: 5.0 renamed it from "IndexOB" (Cycles registers the same).
+OBJECT_INDEX_PASS = "Object Index" if bpy.app.version >= (5, 0) else "IndexOB"
+
+
 def eevee_engine_id():
     """EEVEE's engine id: BLENDER_EEVEE in 3.4 and 5.x, BLENDER_EEVEE_NEXT in 4.2 to 4.5."""
     items = bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items

@@ -219,7 +219,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         for line in data.reports:
             self._report('WARNING', f"EdgeLight: {line}", record)
         s = frame.Settings(samples=settings.samples, highlights=settings.highlights,
-                           transparent=depsgraph.scene.render.film_transparent, lines=line_settings)
+                           transparent=depsgraph.scene.render.film_transparent, lines=line_settings,
+                           ids="ids" in buffers)
         keep = {} if capture else None
         reported = len(data.reports)
 
@@ -232,6 +233,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         vector = {} if line_settings is not None and svg_output.wanted(depsgraph.scene) else None
         pixels, stats = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=keep,
                                      passes=buffers, preview=preview, vector=vector)
+        if buffers.get("ids") is not None:  # which instance covers each pixel -> its object's pass_index
+            buffers["ids"] = render_passes.object_index(buffers["ids"], data.instances)
         if vector is not None and not self.test_break():  # the lines as SVG beside the frame
             svg_output.write_render(depsgraph.scene, record["layer"], data, camera, line_settings, vector, record)
         for line in data.reports[reported:]:  # what the passes skipped

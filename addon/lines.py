@@ -1,7 +1,8 @@
 """Ink lines, CPU side: which edges each line type draws, their chains (for tapering at free
 ends), and the view-dependent types (silhouettes, smooth contours) per instance and view.
 
-Produces plain arrays (LineSegments); passes/line_pass.py turns them into quads and draws them.
+Produces plain arrays (LineSegments); passes/line_pass.py turns their chains into quads at the
+screen's resolution and draws them.
 """
 from dataclasses import dataclass
 
@@ -12,7 +13,7 @@ from . import native
 # Draw order; where two types share an edge the first drawn wins a tie (line_pass.py).
 TYPES = ("silhouette", "border", "crease", "contour", "material", "marked")
 VIEW_TYPES = frozenset({"silhouette", "contour"})
-# Debug colours (seed 003: silhouettes red, borders and creases yellow).
+# Debug colours (the Edge Types view, properties.py): one per line type.
 DEBUG_COLORS = {
     "silhouette": (1.0, 0.0, 0.0), "crease": (1.0, 1.0, 0.0), "border": (1.0, 1.0, 0.0),
     "contour": (0.0, 1.0, 1.0), "marked": (1.0, 0.0, 1.0), "material": (0.0, 1.0, 0.0),
@@ -92,6 +93,9 @@ class LineSegments:
     n2: np.ndarray
     taper: np.ndarray
     faces: np.ndarray = None           # (N, 2) float32
+    # The library's chain record of each segment (native.CHAIN_LINK: chain, arc length at p0
+    # and p1), from which the line pass puts segments in chain order; None: each its own chain.
+    chain_links: np.ndarray = None
 
     def __len__(self):
         return len(self.p0)
@@ -124,14 +128,26 @@ def _edge_segments(edge_data, mesh, selected, taper):
     sel = np.flatnonzero(selected).astype(np.uint32)
     e = edge_data.edges[sel]
     n = edge_data.normals[sel]
+    # Chains always: tapering needs them, and the line pass draws chains at the screen's
+    # resolution (passes/line_pass.py).
+    links, chains = mesh.chain_edges(sel) if len(sel) else (None, None)
     if taper and len(sel):
-        t = taper_params(*mesh.chain_edges(sel))
+        t = taper_params(links, chains)
     else:
         t = np.full((len(sel), 2), NO_TAPER, np.float32)
     faces = np.stack([edge_data.face_a[sel], edge_data.face_b[sel]], axis=1)
     return LineSegments(edge_data.positions[e[:, 0]], edge_data.positions[e[:, 1]],
                         np.ascontiguousarray(n[:, :3]), np.ascontiguousarray(n[:, 3:]), t,
-                        surface_ids(edge_data, faces))
+                        surface_ids(edge_data, faces), links)
+
+
+def crease_edges(mesh, crease_deg):
+    """Per edge of native.Mesh `mesh`, whether it is a crease at `crease_deg`: the library's rule
+    (EL_EDGE_CREASE, classify.cpp: a manifold edge whose face normals differ by more than the
+    angle, never a degenerate one or one between faces wound against each other), asked of the
+    library so that the add-on holds no copy of it."""
+    mesh.classify(crease_deg)
+    return (mesh.edge_flags() & native.EDGE_CREASE) != 0
 
 
 def static_lines(edge_data, mesh, settings):
@@ -143,11 +159,12 @@ def static_lines(edge_data, mesh, settings):
     usable = (flags & native.EDGE_DEGENERATE) == 0
     pick = {
         "border": (flags & native.EDGE_BORDER) != 0,
-        "crease": ((flags & native.EDGE_MANIFOLD) != 0) & (d.angles > settings.crease_deg),
         "material": (flags & native.EDGE_MATERIAL_BOUNDARY) != 0,
         "marked": (flags & settings.marks) != 0,
         "wire": np.ones(len(flags), bool),
     }
+    if "crease" in settings.types:
+        pick["crease"] = crease_edges(mesh, settings.crease_deg)
     out = {}
     for kind, style in settings.styles:
         if kind in pick:
@@ -186,11 +203,12 @@ def view_lines(extract, index, matrix, camera, settings, counters=None):
         smooth = getattr(extract, "smooth_faces", None)
         keep = smooth[tris] if smooth is not None and len(tris) else np.ones(len(tris), bool)
         fn = extract.face_normals()[tris] if len(tris) else np.zeros((0, 3), np.float32)
+        links, chains = views.contour_chains() if len(tris) else (np.zeros(0, native.CHAIN_LINK), None)
         if settings.style("contour").taper > 0.0 and len(tris):
-            t = taper_params(*views.contour_chains())
+            t = taper_params(links, chains)
         else:
             t = np.full((len(tris), 2), NO_TAPER, np.float32)
         faces = np.stack([tris, tris], axis=1) if len(tris) else np.zeros((0, 2), np.int64)
         out["contour"] = LineSegments(np.ascontiguousarray(pts[keep, 0]), np.ascontiguousarray(pts[keep, 1]),
-                                      fn[keep], fn[keep], t[keep], surface_ids(d, faces[keep]))
+                                      fn[keep], fn[keep], t[keep], surface_ids(d, faces[keep]), links[keep])
     return out

@@ -1,19 +1,22 @@
 """What the passes need to know about a material, read once per frame."""
 import math
-import weakref
 from dataclasses import dataclass, replace
 
-import numpy as np
-
 from . import color_ramp, compat
+from . import material_defaults as defaults
+from .passes import shader_specs
 from .properties import K_MAX
+from .radius_clamp_notes import radius_clamps  # noqa: F401 - the material panel's note (ui.py)
 
-DEFAULT_COLOR = (0.8, 0.8, 0.8)
+DEFAULT_COLOR = (0.8, 0.8, 0.8)  # Principled BSDF's Base Color
+# The surface program's shading modes (shaders/surface_modes.json), keyed as the material's
+# `shading` setting.
+SURFACE_MODES = shader_specs.enum("surface_modes.json", "EL_SURFACE_MODE")
 
 
 @dataclass(frozen=True)
 class Toon:
-    mode: int              # 0 Blinn-Phong, 1 ramp, 2 X-Toon
+    mode: int              # SURFACE_MODES: PHONG, RAMP or XTOON
     ramp: tuple = ()       # ((position, (r, g, b)), ...) sorted by position
     smooth: bool = False   # the ramp interpolates between stops
     image: object = None   # X-Toon bpy.types.Image, or None for the built-in map
@@ -22,7 +25,7 @@ class Toon:
     far: float = 20.0
 
 
-PHONG = Toon(0)
+PHONG = Toon(SURFACE_MODES["PHONG"])
 
 
 @dataclass(frozen=True)
@@ -51,8 +54,8 @@ def default_ramp(base):
 
 
 def toon_of(settings, base):
-    mode = {'PHONG': 0, 'RAMP': 1, 'XTOON': 2}[settings.shading]
-    if mode == 0:
+    mode = SURFACE_MODES[settings.shading]
+    if mode == PHONG.mode:
         return PHONG
     stops, smooth = color_ramp.stops_of(settings)
     return Toon(mode, stops or default_ramp(base), smooth, settings.xtoon_image,
@@ -99,9 +102,10 @@ def base_color_of(material):
 
 def shading_of(material):
     """Shading for a material slot's material, or the default look when there is none."""
-    if material is None:
-        return Shading(DEFAULT_COLOR, 1.0, (0.04,) * 3, shininess_from_roughness(0.5),
-                       True, 1.0, 0.01, (1.0, 1.0, 1.0), frozenset({'ANGLE', 'SHARP', 'BEVEL'}), 30.0, PHONG)
+    if material is None:  # Principled BSDF's defaults (Specular 0.5, Roughness 0.5), EdgeLight's
+        return Shading(DEFAULT_COLOR, 1.0, (0.08 * 0.5,) * 3, shininess_from_roughness(0.5),
+                       defaults.ROUNDED, defaults.HIGHLIGHT_STRENGTH, defaults.RADIUS, defaults.TINT, defaults.EDGES,
+                       defaults.ANGLE_DEG, Toon(SURFACE_MODES[defaults.SHADING]))
     node = _principled(material)
     if node is not None:
         base = base_color_of(material)
@@ -127,83 +131,11 @@ def shading_of(material):
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full)
 
 
-# ---- radius clamp notes ------------------------------------------------------------------------
-# What the material panel says about the radius clamp (ui.py): per material, how many of the
-# edges it rounds take a smaller radius than its own because their faces allow no more
-# (radius_clamp.py). scene_sync.choose_edges records each geometry's counts whenever it picks
-# that geometry's rounded edges (extraction, or a material change in the viewport). Nothing is
-# written to the material or saved: material name -> {id(geometry's edge data): RadiusClamps}.
-_clamps = {}
-
-
-@dataclass(frozen=True)
-class RadiusClamps:
-    radius: float          # the material's Radius when counted
-    rounded: int           # edges of the geometry the material rounds (on either face)
-    clamped: int           # of those, edges its faces allow less than that radius
-    smallest: float        # the smallest radius an edge was clamped to (inf: none)
-    geometry: object       # weakref to the geometry's edge data: alive while it is drawn
-
-
-def record_radius_clamps(geometry, shading, sides, limit):
-    """Records one geometry's counts for every material of `shading` (slot -> Shading).
-    sides: ((slot, picked, radius) of the rounded edges' first faces, the same of their second),
-    arrays over the rounded edges, `picked` whether that face's material rounds the edge and
-    `radius` the radius it asks; limit: each rounded edge's largest radius (radius_clamp).
-    An edge counts once for each material of its two faces."""
-    for name in list(_clamps):  # geometries freed since the last call (a re-extracted mesh)
-        entries = _clamps[name]
-        for key in [k for k, e in entries.items() if e.geometry() is None]:
-            del entries[key]
-        if not entries:
-            del _clamps[name]
-    names = sorted({s.material for s in shading if s.material})
-    if not names:
-        return
-    index = {name: i for i, name in enumerate(names)}
-    of_slot = np.array([index.get(s.material, -1) for s in shading])
-    (slot_a, pick_a, rad_a), (slot_b, pick_b, rad_b) = sides
-    limit = np.asarray(limit, np.float64)
-    mat_a, mat_b = of_slot[np.asarray(slot_a)], of_slot[np.asarray(slot_b)]
-    rad_a = np.where(pick_a, np.asarray(rad_a, np.float64), math.inf)
-    rad_b = np.where(pick_b, np.asarray(rad_b, np.float64), math.inf)
-    # Clamped: the edge's radius (the smaller one its faces ask) is past the limit; it counts
-    # for the faces' materials that asked more than the limit.
-    cut = np.minimum(rad_a, rad_b) > limit
-    over_a, over_b = cut & (rad_a > limit), cut & (rad_b > limit)
-    second = mat_b != mat_a  # the second face's material is another one
-    rounded, clamped, smallest = np.zeros(len(names), int), np.zeros(len(names), int), np.full(len(names), math.inf)
-    for mat, touch, over in ((mat_a, np.ones(len(limit), bool), over_a | (over_b & ~second)),
-                             (mat_b, second, over_b & second)):
-        has = mat >= 0
-        rounded += np.bincount(mat[has & touch], minlength=len(names))
-        clamped += np.bincount(mat[has & over], minlength=len(names))
-        np.minimum.at(smallest, mat[has & over], limit[has & over])
-    ref = weakref.ref(geometry)
-    radius_of = {s.material: s.radius for s in shading if s.material}
-    for i, name in enumerate(names):
-        _clamps.setdefault(name, {})[id(geometry)] = RadiusClamps(radius_of[name], int(rounded[i]), int(clamped[i]),
-                                                                  float(smallest[i]), ref)
-
-
-def radius_clamps(material):
-    """(edges clamped, edges rounded, smallest clamped radius) of `material` over the geometries
-    EdgeLight holds (the Rendered viewport's), else over those of the last render; None when
-    nothing was counted at the material's current radius."""
-    entries = list(_clamps.get(material.name_full, {}).values())
-    live = [e for e in entries if e.geometry() is not None]
-    radius = float(material.edgelight.radius)
-    entries = [e for e in (live or entries) if e.radius == radius]
-    if not entries:
-        return None
-    return (sum(e.clamped for e in entries), sum(e.rounded for e in entries), min(e.smallest for e in entries))
-
-
 def usable_toon(material_name, toon):
     """The toon settings with anything unusable replaced by the default, and a note saying so:
     a bad setting falls back for its own material only, never blanks the frame."""
     image = toon.image
-    if toon.mode != 2 or image is None:
+    if toon.mode != SURFACE_MODES["XTOON"] or image is None:
         return toon, ""
     w, h = image.size
     if w >= 2 and h >= 2 and image.channels >= 1:

@@ -39,6 +39,10 @@ CHAIN_CLOSED = 1 << 0
 CHAIN_START_FREE = 1 << 1
 CHAIN_END_FREE = 1 << 2
 
+LINE_GROUP = 8
+LINE_NODE_FLOATS = 20
+LINE_NODES_CHAIN_SPHERES = 1 << 0
+
 TABLE_PAPER = 0
 TABLE_WARPED = 1
 TABLE_BICUBIC = 2
@@ -142,6 +146,7 @@ _SIGNATURES = {
     "el_view_get_stats": [_P, ctypes.POINTER(ViewStats)],
     "el_mesh_chain_edges": [_P, _u32p, ctypes.c_uint32, _P, _P, ctypes.c_uint32, _u32p],
     "el_view_chain_contours": [_P, _P, ctypes.c_uint32, _P, ctypes.c_uint32, _u32p],
+    "el_line_nodes": [_f32p, _f32p, _f32p, _P, ctypes.c_uint32, ctypes.c_uint32, _f32p, ctypes.c_uint32, _u32p],
     "el_highlight_table_create": [ctypes.POINTER(TableDesc), ctypes.POINTER(_P)],
     "el_highlight_table_get_info": [_P, ctypes.POINTER(TableInfo)],
     "el_highlight_table_copy": [_P, _f32p, ctypes.c_uint64],
@@ -437,6 +442,29 @@ class HighlightTable(_Handle):
         arr_out = (HighlightResult * n)()
         self._lib.call("el_highlight_eval_batch", self._h, arr_in, n, arr_out)
         return arr_out
+
+
+def line_nodes(p0, p1, taper, links=None, chain_spheres=False, lib=None):
+    """The line pass's records of segments p0 -> p1 (N, 3) with taper values (N, 2) and their
+    chain records (CHAIN_LINK, or None: each segment its own chain), el_line_nodes: (nodes (N,
+    LINE_NODE_FLOATS) float32 in chain order, order (N,) the segment at each place)."""
+    lib = lib or load()
+    p0 = _contiguous(p0, np.float32, 3)
+    p1 = _contiguous(p1, np.float32, 3)
+    taper = _contiguous(taper, np.float32, 2)
+    n = len(p0)
+    if len(p1) != n or len(taper) != n:
+        raise ValueError(f"line_nodes: {n} starts, {len(p1)} ends, {len(taper)} taper pairs")
+    if links is not None:
+        links = np.ascontiguousarray(links, CHAIN_LINK)
+        if len(links) != n:
+            raise ValueError(f"line_nodes: {len(links)} chain records for {n} segments")
+    nodes = np.empty((n, LINE_NODE_FLOATS), np.float32)
+    order = np.empty(n, np.uint32)
+    lib.call("el_line_nodes", _ptr(p0, ctypes.c_float), _ptr(p1, ctypes.c_float), _ptr(taper, ctypes.c_float),
+             links.ctypes.data if links is not None else None, n, LINE_NODES_CHAIN_SPHERES if chain_spheres else 0,
+             _ptr(nodes, ctypes.c_float), n, _ptr(order, ctypes.c_uint32))
+    return nodes, order
 
 
 def highlight_reference(inp, lib=None):

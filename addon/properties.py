@@ -4,6 +4,7 @@ import math
 import bpy
 
 from . import line_units
+from . import material_defaults as defaults
 
 # The settings layout. Bumped when a stored property is renamed or changes meaning; each bump
 # gets a step in versioning.py that upgrades files saved with the layout before.
@@ -29,20 +30,20 @@ def _tag(self, context):
 
 class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
     use_rounding: bpy.props.BoolProperty(
-        update=_tag, name="Rounded Edges", default=True,
+        update=_tag, name="Rounded Edges", default=defaults.ROUNDED,
         description="Round this material's chosen edges with a thin highlight, like a bevel would")
     # Stored as `K` (the paper's name): files and scripts keep working.
     K: bpy.props.FloatProperty(
-        update=_tag, name="Highlight Strength", default=1.0, min=0.0, max=K_MAX, subtype='FACTOR',
+        update=_tag, name="Highlight Strength", default=defaults.HIGHLIGHT_STRENGTH, min=0.0, max=K_MAX, subtype='FACTOR',
         description="How strongly the edge highlight shows: 1 is as bright and wide as a real rounded "
                     "edge of this radius, 0 turns it off. For a wider or brighter band, raise the Radius")
     radius: bpy.props.FloatProperty(
-        update=_tag, name="Radius", default=0.01, min=0.0, soft_max=0.1, unit='LENGTH', precision=4,
+        update=_tag, name="Radius", default=defaults.RADIUS, min=0.0, soft_max=0.1, unit='LENGTH', precision=4,
         description="Bevel radius in the object's local units, scaled with the object, like the Bevel "
                     "modifier's Amount. Each edge takes at most what its faces allow (as Bevel's Clamp "
                     "Overlap): half its narrower face's width over tan(half the angle between the faces)")
     tint: bpy.props.FloatVectorProperty(
-        update=_tag, name="Highlight Tint", subtype='COLOR', size=3, default=(1.0, 1.0, 1.0), min=0.0, soft_max=1.0,
+        update=_tag, name="Highlight Tint", subtype='COLOR', size=3, default=defaults.TINT, min=0.0, soft_max=1.0,
         description="Multiplies the specular part of the edge highlight")
     use_custom_shininess: bpy.props.BoolProperty(
         update=_tag, name="Custom Shininess", default=False,
@@ -55,14 +56,14 @@ class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
         items=[('ANGLE', "Angle", "Edges whose faces meet at more than the angle below"),
                ('SHARP', "Sharp", "Edges marked sharp"),
                ('BEVEL', "Bevel Weight", "Edges with a bevel weight; the radius is scaled by it")],
-        default={'ANGLE', 'SHARP', 'BEVEL'},
+        default=set(defaults.EDGES),
         description="Which edges are rounded (any of the chosen rules)")
     angle: bpy.props.FloatProperty(
-        update=_tag, name="Angle", default=0.5235988, min=0.0, max=3.14159265, subtype='ANGLE',
+        update=_tag, name="Angle", default=math.radians(defaults.ANGLE_DEG), min=0.0, max=3.14159265, subtype='ANGLE',
         description="Edges whose face normals differ by more than this are rounded (Auto Smooth convention)")
-    # Toon shading (seed 003's shade ramp, seed 004's X-Toon).
+    # Toon shading: a shade ramp (cel shading) or an X-Toon image.
     shading: bpy.props.EnumProperty(
-        update=_tag, name="Shading", default='PHONG',
+        update=_tag, name="Shading", default=defaults.SHADING,
         items=[('PHONG', "Blinn-Phong", "Lit by the scene's lights from the material's colour and roughness"),
                ('RAMP', "Toon Ramp", "Cel shading: the lighting N.L looked up in a colour ramp"),
                ('XTOON', "X-Toon", "The lighting N.L and depth or orientation looked up in a 2-D image")],
@@ -88,7 +89,7 @@ class EdgeLightMaterialSettings(bpy.types.PropertyGroup):
         default=SETTINGS_VERSION, options={'HIDDEN'}, description="Settings layout these values were saved with")
 
 
-# Line types: (property suffix, label, default colour, default enabled, description).
+# Line types: (property suffix, label, enabled by default, description).
 LINE_TYPES = (
     ("silhouette", "Silhouettes", True, "Edges between a face turned to the eye and one turned away"),
     ("crease", "Creases", True, "Edges whose faces meet at more than the crease angle"),
@@ -137,6 +138,9 @@ def _line_style(name, enabled):
     return type(f"EdgeLightLineStyle_{name}", (bpy.types.PropertyGroup,), {"__annotations__": annotations})
 
 
+# Generated classes, one per line type: EdgeLightLineStyle_silhouette, EdgeLightLineStyle_crease,
+# EdgeLightLineStyle_border, EdgeLightLineStyle_contour, EdgeLightLineStyle_marked and
+# EdgeLightLineStyle_material, held by EdgeLightSceneSettings.line_silhouette, line_crease, ...
 LINE_STYLES = tuple(_line_style(name, on) for name, _label, on, _doc in LINE_TYPES)
 
 

@@ -1,5 +1,6 @@
-"""Render passes beside Combined, offered the way Cycles and EEVEE offer theirs: Blender's Depth
-and Normal when the view layer asks for them (use_pass_z, use_pass_normal), and EdgeLight's own
+"""Render passes beside Combined, offered the way Cycles and EEVEE offer theirs: Blender's Depth,
+Normal and Object Index when the view layer asks for them (use_pass_z, use_pass_normal,
+use_pass_object_index), and EdgeLight's own
 Highlights, Lines and Surface, switched on per view layer (View Layer Properties -> EdgeLight
 Passes). How Combined is recomposed from them: docs/addon.md, "Render passes".
 """
@@ -11,6 +12,8 @@ from .panel_base import EdgeLightPanel
 
 # Where nothing was drawn, Depth holds what Cycles and EEVEE write there.
 BACKGROUND_DEPTH = 1e10
+# Blender's name of the Object Index pass (the compositor's Render Layers socket).
+OBJECT_INDEX = compat.OBJECT_INDEX_PASS
 
 # EdgeLight's own passes: (pass name, view-layer setting, frame buffer)
 OWN_PASSES = (
@@ -51,6 +54,8 @@ def enabled(view_layer):
         out.append(("Depth", 1, "Z", 'VALUE', "depth"))
     if view_layer.use_pass_normal:
         out.append(("Normal", 3, "XYZ", 'VECTOR', "normal"))
+    if view_layer.use_pass_object_index:
+        out.append((OBJECT_INDEX, 1, "X", 'VALUE', "ids"))
     settings = getattr(view_layer, "edgelight", None)
     for name, prop, buffer in OWN_PASSES:
         if settings is not None and getattr(settings, prop):
@@ -68,8 +73,19 @@ def buffers_wanted(view_layer):
     return {buffer: None for *_, buffer in enabled(view_layer) if buffer}
 
 
+def object_index(ids, instances):
+    """The Object Index pass ((h, w, 1) float32) from the first sample's ids ((h, w, 2): instance
+    + 1, 0 where nothing was drawn; then the face): each pixel's object pass_index, 0 where
+    nothing was drawn, as Cycles writes it (the pixel centre's object, not filtered)."""
+    table = np.array([0.0] + [inst.pass_index for inst in instances], np.float32)
+    index = np.rint(ids[..., 0]).astype(np.int64)
+    index[(index < 0) | (index >= len(table))] = 0
+    return table[index][..., None]
+
+
 def pass_pixels(buffer, data):
-    """A frame buffer ((h, w, 4) float32) as its render pass stores it."""
+    """A frame buffer ((h, w, 4) float32; "ids" already object_index's (h, w, 1)) as its render
+    pass stores it."""
     if buffer == "depth":  # 1 / view depth, 0 = nothing drawn -> distance along the view axis
         inv = data[..., 0]
         out = np.full(inv.shape + (1,), BACKGROUND_DEPTH, np.float32)
@@ -109,6 +125,8 @@ class VIEWLAYER_PT_edgelight_passes(EdgeLightPanel, bpy.types.Panel):
         col = layout.column(heading="Data")
         col.prop(view_layer, "use_pass_z")
         col.prop(view_layer, "use_pass_normal")
+        col = layout.column(heading="Indexes")
+        col.prop(view_layer, "use_pass_object_index")
         col = layout.column(heading="EdgeLight")
         settings = view_layer.edgelight
         for _, prop, _ in OWN_PASSES:

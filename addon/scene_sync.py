@@ -8,27 +8,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import band_ends, compat, native, radius_clamp
-from .lines import static_lines, surface_ids
-from .materials import record_radius_clamps, shading_of
+from . import compat, native, radius_clamp
+from .edge_choice import choose_edges
+from .edge_data import EdgeData, first_two_faces
+from .lines import static_lines
+from .materials import shading_of
 from .passes import shader_specs
 
 GEOMETRY_TYPES = {'MESH', 'CURVE', 'SURFACE', 'FONT', 'META'}
-
-
-@dataclass
-class EdgeSet:
-    """Chosen edges of one material slot, object space."""
-    p0: np.ndarray
-    p1: np.ndarray
-    n1: np.ndarray
-    n2: np.ndarray
-    radius: np.ndarray
-    faces: np.ndarray = None           # (N, 2) float32 surface ids of its two faces (band visibility)
-    ends: np.ndarray = None            # (N, 4) float32 where its band ends on each face (band_ends.py)
-
-    def __len__(self):
-        return len(self.radius)
 
 
 @dataclass
@@ -38,9 +25,9 @@ class MeshExtract:
     corner_nor: np.ndarray            # (3T, 3) Blender's corner normals
     slot_triangles: dict              # slot -> triangle indices
     slot_shading: list                # slot -> materials.Shading
-    edges: dict = field(default_factory=dict)  # slot -> EdgeSet
+    edges: dict = field(default_factory=dict)  # slot -> edge_choice.EdgeSet
     info: dict = field(default_factory=dict)
-    edge_data: object = None                    # EdgeData
+    edge_data: object = None                    # edge_data.EdgeData
     native: object = None                       # native.Mesh, kept for chains and views
     lines: dict = field(default_factory=dict)   # line type -> lines.LineSegments (static types)
     lines_key: object = None                    # the LineSettings.static_key() of `lines`
@@ -83,6 +70,7 @@ class Light:
 class Instance:
     mesh: MeshExtract
     matrix: np.ndarray                 # object -> world, 4x4 row-major
+    pass_index: int = 0                # its object's Pass Index (the Object Index render pass)
 
 
 @dataclass
@@ -128,26 +116,6 @@ def polygon_unit_normals(mesh, positions):
     length = np.linalg.norm(n, axis=1, keepdims=True)
     ok = np.isfinite(length) & (length > 0.5) & (area[:, None] > 1e-12 * extent * extent)
     return np.where(ok, n / np.where(ok, length, 1.0), 0.0).astype(np.float32)
-
-
-def _first_two_faces(tri_edges, edge_count):
-    """For each edge the first two triangles that use it (-1 where none)."""
-    sides = tri_edges.reshape(-1).astype(np.int64)
-    faces = np.repeat(np.arange(len(tri_edges)), 3)
-    keep = sides != native.NO_EDGE
-    sides, faces = sides[keep], faces[keep]
-    order = np.argsort(sides, kind="stable")
-    sides, faces = sides[order], faces[order]
-    first = np.full(edge_count, -1, np.int64)
-    second = np.full(edge_count, -1, np.int64)
-    starts = np.flatnonzero(np.r_[True, sides[1:] != sides[:-1]]) if len(sides) else np.array([], np.int64)
-    first[sides[starts]] = faces[starts]
-    nxt = starts + 1
-    ok = nxt < len(sides)
-    nxt, st = nxt[ok], starts[ok]
-    same = sides[nxt] == sides[st]
-    second[sides[st[same]]] = faces[nxt[same]]
-    return first, second
 
 
 def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
@@ -198,7 +166,7 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     nor = out.corner_nor.reshape(-1, 3, 3)
     out.smooth_faces = np.any(np.einsum("tck,tk->tc", nor, tri_normals) < 1.0 - 1e-5, axis=1)
     out.edge_data = EdgeData(m.edge_flags(), m.edge_angles(), m.edge_normals(), edges, positions,
-                             *_first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id, polygons)
+                             *first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id, polygons)
     out.edges = choose_edges(out.edge_data, shading)
     out.native = m
     out.update_lines(line_settings)
@@ -208,90 +176,6 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
                                f"and silhouettes only, the mesh is unchanged)")
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
-    return out
-
-
-@dataclass
-class EdgeData:
-    """Per-edge classification of one mesh (numpy copies of the native results)."""
-    flags: np.ndarray
-    angles: np.ndarray
-    normals: np.ndarray
-    edges: np.ndarray
-    positions: np.ndarray
-    face_a: np.ndarray
-    face_b: np.ndarray
-    tri_slot: np.ndarray
-    sharp: np.ndarray
-    bevel: np.ndarray
-    surface_id: np.ndarray = None      # per triangle: 1 + its place in the slot-ordered surface batches
-    polygons: object = None            # radius_clamp.Polygons
-    face_widths: np.ndarray = None     # (E, 2) width of each edge's faces across it, NaN until needed
-
-    def widths_of(self, sel):
-        """The face widths of edges `sel`, computed once per edge (radius_clamp)."""
-        if self.face_widths is None:
-            self.face_widths = np.full((len(self.edges), 2), np.nan)
-        todo = sel[np.isnan(self.face_widths[sel, 0])]
-        if len(todo):
-            faces = np.stack([self.face_a[todo], self.face_b[todo]], axis=1)
-            self.face_widths[todo] = radius_clamp.widths(self.polygons, self.positions, self.edges[todo], faces)
-        return self.face_widths[sel]
-
-
-def rechoose_edges(extract):
-    return choose_edges(extract.edge_data, extract.slot_shading)
-
-
-def same_edges(a, b):
-    if a.keys() != b.keys():
-        return False
-    return all(len(a[k]) == len(b[k]) and np.array_equal(a[k].radius, b[k].radius) and np.array_equal(a[k].p0, b[k].p0)
-               for k in a)
-
-
-def choose_edges(d, shading):
-    """Edges each material rounds. An edge between two materials is rounded when both enable
-    rounding and either one's rule picks it; it takes the smaller radius and the shading of the
-    material of its first face."""
-    flags, angles, normals, edges, positions = d.flags, d.angles, d.normals, d.edges, d.positions
-    face_a, face_b, tri_slot, sharp, bevel = d.face_a, d.face_b, d.tri_slot, d.sharp, d.bevel
-    ok = ((flags & native.EDGE_MANIFOLD) != 0) & ((flags & native.EDGE_DEGENERATE) == 0) & (face_b >= 0)
-    slot_a = np.where(face_a >= 0, tri_slot[np.maximum(face_a, 0)], 0)
-    slot_b = np.where(face_b >= 0, tri_slot[np.maximum(face_b, 0)], 0)
-
-    def picked(slot):
-        enabled = np.array([s.enabled and s.radius > 0.0 and s.K > 0.0 for s in shading])[slot]
-        by_angle = np.array(['ANGLE' in s.rules for s in shading])[slot] & (angles > np.array([s.angle_deg for s in shading])[slot])
-        by_sharp = np.array(['SHARP' in s.rules for s in shading])[slot] & sharp
-        by_bevel = np.array(['BEVEL' in s.rules for s in shading])[slot] & (bevel > 0.0)
-        radius = np.array([s.radius for s in shading], np.float32)[slot]
-        # Picked by bevel weight alone: the weight scales the radius (like the Bevel modifier).
-        radius = np.where(by_bevel & ~(by_angle | by_sharp), radius * bevel, radius)
-        return enabled, by_angle | by_sharp | by_bevel, radius
-
-    en_a, pick_a, rad_a = picked(slot_a)
-    en_b, pick_b, rad_b = picked(slot_b)
-    chosen = ok & en_a & en_b & (pick_a | pick_b)
-    radius = np.minimum(np.where(pick_a, rad_a, np.inf), np.where(pick_b, rad_b, np.inf)).astype(np.float32)
-    # No larger than the faces allow (Clamp Overlap): past that a band is no fillet's image.
-    picked_edges = np.flatnonzero(chosen)
-    if d.polygons is not None and len(picked_edges):
-        limit = radius_clamp.max_radius(d.widths_of(picked_edges), angles[picked_edges])
-        radius[picked_edges] = np.minimum(radius[picked_edges], limit).astype(np.float32)
-    else:
-        limit = np.full(len(picked_edges), np.inf)
-    # For the material panel's note (materials.radius_clamps): nothing is written to the materials.
-    e = picked_edges
-    record_radius_clamps(d, shading, ((slot_a[e], pick_a[e], rad_a[e]), (slot_b[e], pick_b[e], rad_b[e])), limit)
-    out = {}
-    for slot in np.unique(slot_a[chosen]):
-        sel = np.flatnonzero(chosen & (slot_a == slot))
-        faces = np.stack([face_a[sel], face_b[sel]], axis=1)
-        out[int(slot)] = EdgeSet(positions[edges[sel, 0]], positions[edges[sel, 1]],
-                                 np.ascontiguousarray(normals[sel, :3]), np.ascontiguousarray(normals[sel, 3:]),
-                                 radius[sel], surface_ids(d, faces),
-                                 band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen))
     return out
 
 
@@ -394,7 +278,7 @@ def walk_instances(depsgraph, lookup):
         materials = object_materials(ob, override)
         extract = lookup(geometry_key(ob, materials), ob, inst, materials)
         if extract is not None:
-            instances.append(Instance(extract, np.array(inst.matrix_world, dtype=np.float32)))
+            instances.append(Instance(extract, np.array(inst.matrix_world, dtype=np.float32), ob.pass_index))
     return instances, lights, not_drawn
 
 

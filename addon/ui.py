@@ -201,6 +201,9 @@ class EDGELIGHT_PT_debug(EdgeLightPanel, bpy.types.Panel):
         self.layout.prop(context.scene.edgelight, "show_debug_stats")
 
 
+# Generated panels, one per line type under EDGELIGHT_PT_lines: EDGELIGHT_PT_lines_silhouette,
+# EDGELIGHT_PT_lines_crease, EDGELIGHT_PT_lines_border, EDGELIGHT_PT_lines_contour,
+# EDGELIGHT_PT_lines_marked and EDGELIGHT_PT_lines_material.
 LINE_PANELS = tuple(_line_type_panel(name, label) for name, label, _on, _doc in LINE_TYPES)
 CLASSES = (EDGELIGHT_OT_ramp_new, EDGELIGHT_OT_ramp_single_user, EDGELIGHT_PT_material,
            EDGELIGHT_PT_material_toon, ui_light.EDGELIGHT_PT_light, EDGELIGHT_PT_render, EDGELIGHT_PT_lines, *LINE_PANELS, EDGELIGHT_PT_debug)

@@ -6,15 +6,18 @@ matrices; material -> shading (and the edge batch of an object whose chosen edge
 -> culling counts and a redraw; nothing -> the last image is drawn again, with no native call,
 no upload and no pass.
 """
+import dataclasses
 import time
 from dataclasses import dataclass
 
 import bpy
 import numpy as np
 
-from . import lines, scene_sync
+from . import edge_choice, lines, scene_sync
 from .materials import shading_of
-from .passes import batches, frame, line_pass, toon
+from .passes import batches, frame, frame_data, line_pass, toon, view_lines
+from .passes.camera import Camera
+from .passes.targets import Targets
 
 # Below one 8-bit step an edge cannot change a pixel.
 MIN_WEIGHT = 1.0 / 255.0
@@ -117,8 +120,8 @@ class ViewportState:
         note = scene_sync.not_drawn_note(not_drawn)
         if note and note not in self.reports:
             self.reports.append(note)
-        if len(lights) > frame.MAX_LIGHTS:
-            engine_note = f"{len(lights)} lights; the {frame.MAX_LIGHTS} first are used"
+        if len(lights) > frame_data.MAX_LIGHTS:
+            engine_note = f"{len(lights)} lights; the {frame_data.MAX_LIGHTS} first are used"
             if engine_note not in self.reports:
                 self.reports.append(engine_note)
         self.instances, self.lights = instances, lights
@@ -147,14 +150,18 @@ class ViewportState:
 
     def _reshade(self, cache, materials):
         """Material settings changed: new uniforms; new edge batches only where the chosen edges
-        changed. No native call: the classification is kept in the extract."""
+        changed. No native call: the classification is kept in the extract. The extract is
+        replaced by a copy with the new shading and edges, never changed in place: what still
+        holds the old one (the last instances, a render's scene) keeps a consistent one."""
         ex = cache.extract
+        shading = [shading_of(m) for m in materials] or [shading_of(None)]
+        edges = edge_choice.choose_edges(ex.edge_data, shading)
+        same = edge_choice.same_edges(edges, ex.edges)
         cache.materials = list(materials)
-        ex.slot_shading = [shading_of(m) for m in cache.materials] or [shading_of(None)]
-        edges = scene_sync.rechoose_edges(ex)
-        if not scene_sync.same_edges(edges, ex.edges):
-            ex.edges = edges
-            cache.edges_stale = True
+        cache.extract = dataclasses.replace(ex, slot_shading=shading, edges=ex.edges if same else edges)
+        if cache.gpu is not None:
+            cache.gpu.extract = cache.extract  # its batches draw the new extract's shading
+        cache.edges_stale = cache.edges_stale or not same
 
     # ---- view_draw ---------------------------------------------------------------------
     def draw(self, engine, context, depsgraph):
@@ -166,7 +173,7 @@ class ViewportState:
         settings = depsgraph.scene.edgelight
         fresh = False
         if self.targets is None or self.targets.size != (width, height):
-            self.targets = frame.Targets(width, height)
+            self.targets = Targets(width, height)
             self.image_valid = False
         gpu_meshes = {}
         for cache in self._caches():
@@ -210,15 +217,17 @@ class ViewportState:
         the view, an instance or the view-dependent line settings changed."""
         ls = self.line_settings
         view_styles = tuple((t, st.taper > 0.0) for t, st in ls.styles if t in lines.VIEW_TYPES) if ls else ()
+        # Per instance its geometry (the native mesh: a material change copies the extract but
+        # keeps it) and its transform.
         key = (view_key, view_styles,
-               tuple((id(i.mesh), i.matrix.tobytes()) for i in self.instances)) if view_styles else None
+               tuple((id(i.mesh.native), i.matrix.tobytes()) for i in self.instances)) if view_styles else None
         if key == self.view_lines_key:
             return
         self.view_lines_key = key
         if key is None:
             self.view_batches = []
             return
-        segments = frame.view_line_segments(scene, camera, ls, self.counters)
+        segments = view_lines.view_line_segments(scene, camera, ls, self.counters)
         self.view_batches = [line_pass.line_batches(segs) for segs in segments]
         self.counters.view_uploads += sum(len(b) for b in self.view_batches)
 
@@ -276,7 +285,7 @@ def viewport_camera(rv3d, width, height):
     view = np.array(rv3d.view_matrix, dtype=np.float64)
     world = np.linalg.inv(view)
     forward = -world[:3, 2] / np.linalg.norm(world[:3, 2])
-    return frame.Camera(view=view, projection=np.array(rv3d.window_matrix, dtype=np.float64),
+    return Camera(view=view, projection=np.array(rv3d.window_matrix, dtype=np.float64),
                         eye=tuple(world[:3, 3]), view_dir=tuple(forward),
                         orthographic=not rv3d.is_perspective, width=width, height=height)
 

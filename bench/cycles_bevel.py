@@ -93,10 +93,7 @@ def main():
                     rows.append((name, width, label, dt, rname, *gt_scenes.errors(img, ref, regions[rname])))
                 print(f"{name} {width:g}px {label}: {dt:.1f} s", flush=True)
             rows.append((name, width, f"reference ({REF_SAMPLES} spp)", t_ref, "all", 0.0, 0.0, float("inf"), 0))
-            with open(OUT, "w") as f:
-                f.write("part,width_px,method,time_s,region,rmse,max_err,psnr_db,pixels\n")
-                for r in rows:
-                    f.write(",".join(str(v) if not isinstance(v, float) else f"{v:.6g}" for v in r) + "\n")
+            gt_scenes.write_csv(OUT, "part,width_px,method,time_s,region,rmse,max_err,psnr_db,pixels", rows)
     print("wrote", OUT)
 
 

@@ -8,7 +8,7 @@ highlights off (so the surface shading is exactly the other methods') and REF_SA
 samples per pixel. Methods, all at SAMPLES samples: highlights off; EdgeLight; the Bevel modifier
 with 1, 2, 4, 8 segments and highlights off. METHODS=all adds the earlier edge methods kept for
 this comparison (the paper's 1-pixel line, the whole-arc mean, the per-pixel quadrature:
-EDGELIGHT_EDGE_METHOD, shaders/edge_band.glsl).
+bench/edge_methods.py, bench/shaders/).
 
 Parts (bench/gt_scenes.py): the samples, libcgal-demo meshes and the parts bench/parts.py builds,
 each in the fandisk sample's place. Widths are the fillet radius in pixels at the part's centre,
@@ -28,6 +28,7 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "bench"))
+import edge_methods  # noqa: E402
 import fillets  # noqa: E402
 import gt_scenes  # noqa: E402
 
@@ -67,7 +68,10 @@ def configure(name, radius, method, segments, samples):
         fillets.add_fillets(s, radius, segments)
     elif method is None:
         s.edgelight.highlights = False
-    os.environ["EDGELIGHT_EDGE_METHOD"] = method or "partial"
+    if method in (None, "partial"):
+        edge_methods.restore()  # the add-on's own edge pass
+    else:
+        edge_methods.use(method)
     return s
 
 
@@ -114,10 +118,7 @@ def main():
                     rows.append((name, width, radius, label, times[label], rname, *gt_scenes.errors(images[label], ref, m)))
                 np.save(os.path.join(out_dir, f"gt_{tag}_{label.replace(' ', '_')}.npy"), images[label].astype(np.float32))
             rows.append((name, width, radius, REF, t_ref, "all", 0.0, 0.0, float("inf"), int(region["all"].sum())))
-            with open(OUT, "w") as f:
-                f.write("part,width_px,radius,method,time_s,region,rmse,max_err,psnr_db,pixels\n")
-                for r in rows:
-                    f.write(",".join(str(v) if not isinstance(v, float) else f"{v:.6g}" for v in r) + "\n")
+            gt_scenes.write_csv(OUT, "part,width_px,radius,method,time_s,region,rmse,max_err,psnr_db,pixels", rows)
     print("wrote", OUT)
 
 

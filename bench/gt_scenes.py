@@ -219,3 +219,11 @@ def errors(image, reference, m):
     diff = display(image)[m] - display(reference)[m]
     mse = float(np.mean(diff ** 2))
     return math.sqrt(mse), float(np.abs(diff).max()), 10.0 * math.log10(1.0 / max(mse, 1e-12)), int(m.sum())
+
+
+def write_csv(path, header, rows):
+    """The rows so far (rewritten after every part and width, so a long run leaves its results)."""
+    with open(path, "w") as f:
+        f.write(header + "\n")
+        for r in rows:
+            f.write(",".join(str(v) if not isinstance(v, float) else f"{v:.6g}" for v in r) + "\n")

@@ -7,8 +7,8 @@ Scenes: the samples, and generated scenes of 100k and 1M triangles: grids of cub
 cube edge rounded (a stress case: one rounded edge per triangle), and arrays of the fandisk part
 (linked duplicates, rounded at its creases). EDGELIGHT_BENCH_SCENES=cube,100k,parts100k picks
 scenes. Modes: 'orbit' turns the view 1 degree before every draw (a new image each
-time), with highlights off (surface only), on, on with EDGELIGHT_EDGE_FLOOR (the edge pass's
-quads with a fragment shader that does next to nothing: its cost before any shading), and off
+time), with highlights off (surface only), on, on with the edge pass's floor (its quads with a
+fragment shader that does next to nothing: its cost before any shading; bench/edge_methods.py), and off
 with ink lines (silhouettes, creases above 45 degrees, borders: a native view update and new
 silhouette batches per draw); 'static' redraws an unchanged view (the cached image). Times come from bpy.ops.wm.redraw_timer, best of REPEAT runs.
 """
@@ -21,6 +21,9 @@ import bpy
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "bench"))
+import edge_methods  # noqa: E402
+
 ARGS = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 OUT = ARGS[0] if ARGS else os.path.join(ROOT, "out", "viewport_bench.md")
 FRAMES = 10
@@ -130,13 +133,16 @@ def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
                                                        ("static redraw (cache hit)", True, False, False, False)):
             scene.edgelight.highlights = highlights
             scene.edgelight.use_lines = lines
-            os.environ["EDGELIGHT_EDGE_FLOOR"] = "1" if floor else "0"
+            if floor:
+                edge_methods.use("partial", floor=True)
+            else:
+                edge_methods.restore()
             draw_ms(True, 1, 1)  # warm up: extraction, batches, shaders; a new mode's first image
             rv3d.view_rotation = start
             if not orbit:
                 draw_ms(False, 1, 1)  # the image of the start view, which the static runs redraw
             result[label] = min(result.get(label, float("inf")), draw_ms(orbit, frames, 1))
-    os.environ.pop("EDGELIGHT_EDGE_FLOOR", None)
+    edge_methods.restore()
     import edgelight
     c = edgelight.viewport.last_state.counters
     tris = sum(len(inst.mesh.corner_pos) // 3 for inst in edgelight.viewport.last_state.instances)

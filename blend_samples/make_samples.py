@@ -2,7 +2,7 @@
 
     blender -b --factory-startup --python blend_samples/make_samples.py -- OUT_DIR [MESH_DIR]
 
-cube.blend: seed 000's figure 3, a unit cube under one sun, EdgeLight on every edge.
+cube.blend: the paper's figure 3, a unit cube under one sun, EdgeLight on every edge.
 fandisk.blend: libcgal-demo's mechanical part (MESH_DIR/fandisk.off), creases above 30 degrees.
 prop.blend: a low-poly crate whose chosen edges carry bevel weights.
 toon.blend: fandisk again, toon-shaded with a three-band ramp, inked silhouettes and creases
@@ -98,7 +98,7 @@ def cube_scene():
     mesh_object(scene, "Cube", verts, faces, material("Cube", (0.55, 0.05, 0.04), 0.3, 0.02))
     cam = add_camera(scene, (5.2, -4.4, 3.6), (0, 0, 0))
     # The sun is mirrored from the view about the bisector of the top and front faces, so that
-    # edge's arc holds the half vector and glints as a bevel would (seed 000, figure 3).
+    # edge's arc holds the half vector and glints as a bevel would (the paper's figure 3).
     from mathutils import Vector
     v = Vector(cam.location).normalized()
     h = Vector((0.0, -1.0, 1.0)).normalized()

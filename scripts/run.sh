@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's main job: set up, build, install the add-on into an isolated Blender user
 # directory, and render the toon sample (fandisk: toon ramp, ink lines, edge highlights) headless
-# with EdgeLight to a PNG. `./scripts/run.sh cube` renders seed 000's figure 3 instead.
+# with EdgeLight to a PNG. `./scripts/run.sh cube` renders the cube sample (the paper's figure 3) instead.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"

@@ -1,29 +1,5 @@
 /* Where a rounded edge's band lies across its projected edge line, and which part of its arc
- * one pixel sees (docs/highlight_math.md, section 15). Needs highlight_arc.glsl.
- *
- * Methods (EL_EDGE_METHOD, defined when the program is built; passes/frame.py reads
- * EDGELIGHT_EDGE_METHOD): a debug and benchmark switch, so the ground-truth benchmark can render
- * the earlier methods with the same shaders. A compile-time constant, not a uniform: llvmpipe
- * would run every method's code in every fragment, masked (it doubled the pass). */
-#define EL_METHOD_PARTIAL 0    /* default: true band position, each pixel its own part of the arc */
-#define EL_METHOD_WHOLE 1      /* until issue 6: band centred on the line, whole-arc mean everywhere */
-#define EL_METHOD_PAPER 2      /* seed 000: a 1-pixel line, W = K r |P.(N1 - N2)| / d, whole-arc mean */
-#define EL_METHOD_QUADRATURE 3 /* as PARTIAL, the kernel by brute-force quadrature (no table) */
-
-#ifndef EL_EDGE_METHOD
-#define EL_EDGE_METHOD EL_METHOD_PARTIAL
-#endif
-
-/* Edge quads fitted to where the band lies (edge_highlight.vert); false only to test that
- * against quads symmetric about the line. */
-#ifndef EL_TIGHT_QUADS
-#define EL_TIGHT_QUADS true
-#endif
-
-int el_method()
-{
-  return EL_EDGE_METHOD;
-}
+ * one pixel sees (docs/highlight_math.md, section 15). Needs highlight_arc.glsl. */
 
 /* Arc normal at angle u from N1. */
 vec3 el_arc_normal(ElArc g, float u)
@@ -65,42 +41,4 @@ ElArc el_sub_arc(ElArc g, float fa, float fb)
   s.vis.to_upper = EL_PI - xb;
   s.width = el_window_width(s.vis);
   return s;
-}
-
-/* Brute-force mean of max(N.D, 0)^n over the visible window, weighted by projected width
- * (sin x): the per-pixel reference integral, free of the table and the closed form. */
-float el_arc_mean_quadrature(ElArc g, vec3 D, float n)
-{
-  const int steps = 256;
-  float len = g.vis.hi - g.vis.lo;
-  if (!(len > 0.0)) {
-    return 0.0;
-  }
-  vec3 Dn = el_safe_normalize(D);
-  float num = 0.0, den = 0.0;
-  for (int k = 0; k < steps; k++) {
-    float t = (float(k) + 0.5) / float(steps) * len;
-    float w = sin(g.vis.from_lower + t);
-    float c = max(dot(el_arc_normal(g, g.vis.lo + t), Dn), 0.0);
-    num += w * pow(c, n);
-    den += w;
-  }
-  return den > 0.0 ? num / den : 0.0;
-}
-
-/* el_edge_colour (edge_shading.glsl) with the quadrature kernel. */
-vec3 el_edge_colour_quadrature(ElArc g, vec3 X, vec3 V)
-{
-  float n = spec_color.w;
-  vec3 col = frame.ambient.rgb * base_color.rgb;
-  int count = int(frame.camera.y + 0.5);
-  for (int i = 0; i < count; i++) {
-    vec3 L, E;
-    light_at(i, X, L, E);
-    vec3 H = el_safe_normalize(L + V);
-    float spec = length(H) > 0.0 ? el_arc_mean_quadrature(g, H, n) : 0.0;
-    float diff = el_arc_mean_quadrature(g, L, 1.0);
-    col += E * (base_color.rgb * (diff / 3.14159265) + tint.rgb * spec_color.rgb * blinn_norm(n) * spec);
-  }
-  return col;
 }

@@ -1,21 +1,7 @@
-/* Edge highlight pass: the rounded edge's shading integrated over the part of its arc this pixel
- * sees (highlight_arc.glsl), weighted by the pixel's coverage of the projected band, depth-tested
- * against the surface pass. Output is premultiplied (W Is, W). */
-#ifdef EL_EDGE_FLOOR
-/* Benchmark only (passes/frame.py, EDGELIGHT_EDGE_FLOOR): the same quads, vertex shader and
- * depth test, and a fragment shader that does next to nothing: what the pass costs before any
- * shading (BENCHMARKS.md). It reads every input the pass binds, so the same uniforms can be set,
- * and writes an invisible 1e-20 of them. */
-void main()
-{
-  vec4 inputs = vec4(edge_point, edge_radius) + table_params + base_color + spec_color + tint +
-                texelFetch(cos_power_table, ivec2(0), 0).r + texelFetch(surface_depth, ivec2(0), 0).r;
-#ifdef EL_EDGE_IDS
-  inputs += texelFetch(surface_id, ivec2(0), 0).r + edge_faces.x + instance_id;
-#endif
-  out_color = inputs * 1e-20;
-}
-#else
+/* Edge highlight pass: which pixels of the quad may show the band (visibility against the surface
+ * pass), and what each shows of it (edge_band_pixel.glsl): the rounded edge's shading integrated
+ * over the part of its arc the pixel sees, weighted by the pixel's coverage of the projected band.
+ * Output is premultiplied (W Is, W). */
 void main()
 {
   vec2 pc = gl_FragCoord.xy;
@@ -69,90 +55,9 @@ void main()
     discard;
   }
 
-  /* Short edges come shaded from the vertex shader; long ones are shaded here, per pixel. */
-  int method = el_method();
-  /* Only the whole-arc methods shade per edge (edge_highlight.vert). A constant false otherwise,
-   * so the branches below fold away: llvmpipe would run them masked, el_arc twice. */
-  bool per_edge = (method == EL_METHOD_WHOLE || method == EL_METHOD_PAPER) && edge_color.w > 0.5;
-  ElArc g;
-  float width, s;
-  if (per_edge) {
-    width = edge_arc.x;
-    s = edge_arc.y;
-  }
-  else {
-    g = el_arc(edge_dir, edge_n1, edge_n2, V);
-    width = g.width;
-    s = sqrt(dot(g.view, g.view)); /* |E x V| */
-  }
-  if (!(width > 0.0) || !(s > 0.0)) {
-    discard;
-  }
-
-  /* The methods before issue 6 (a benchmark and test switch, edge_band.glsl): a band of
-   * projected width w (pixels) centred on the edge line, the pixel's box-filtered coverage of it,
-   * and the whole visible arc's mean colour. It is exact only if the band were centred and fell
-   * within one pixel; measured against fillets it is off already at a pixel (BENCHMARKS.md). */
-  float w_px = edge_radius * width / world_per_px;
-  float t_wide = (method == EL_METHOD_PARTIAL || method == EL_METHOD_QUADRATURE) ? 1.0 : 0.0;
-  float ramp = el_axial_ramp(s);
-  vec4 result = vec4(0.0);
-  if (t_wide < 1.0) {
-    float cover = clamp(min(across + 0.5, 0.5 * w_px) - max(across - 0.5, -0.5 * w_px), 0.0, 1.0);
-    if (method == EL_METHOD_PAPER) {
-      /* A one-pixel line whatever the width, weighted by the whole arc's image width. */
-      if (per_edge) {
-        g = el_arc(edge_dir, edge_n1, edge_n2, V);
-      }
-      float full = edge_radius * length(el_arc_normal(g, 0.0) - el_arc_normal(g, g.alpha)) / world_per_px;
-      cover = clamp(1.0 - abs(across), 0.0, 1.0) * min(full, 1.0);
-    }
-    float W = clamp(tint.w * cover, 0.0, 1.0) * ramp;
-    if (W > 0.0) {
-      vec3 col = per_edge ? edge_color.rgb : el_edge_colour(g, X, V, edge_dir);
-      result = vec4(col * W, W);
-    }
-  }
-  /* EdgeLight's method (docs/highlight_math.md, section 15), at every width: the band where the
-   * fillet's image really lies, and each pixel shaded with the part of the arc whose image it
-   * covers. A short edge's vertex-shaded colour is not used here: each pixel needs its own part
-   * of the arc (about +8% on a dense 100k-edge render, for 2-3x less error at 1 px). */
-  if (t_wide > 0.0) {
-    if (per_edge) {
-      g = el_arc(edge_dir, edge_n1, edge_n2, V);
-    }
-    vec3 P = el_safe_normalize(cross(el_safe_normalize(edge_dir), V));
-    /* Which way P points on screen (the sign of its image along edge_screen's normal). */
-    vec4 q0 = frame.projection * (frame.view * vec4(X, 1.0));
-    vec4 q1 = frame.projection * (frame.view * vec4(X + P * world_per_px, 1.0));
-    float side = dot((q1.xy / q1.w - q0.xy / q0.w) * frame.viewport.xy, edge_screen.zw) < 0.0 ? -1.0 : 1.0;
-    vec2 ends = el_band_ends(g, P, edge_fold) * (side * edge_radius / world_per_px);
-    float b0 = min(ends.x, ends.y), b1 = max(ends.x, ends.y);
-    float pa = max(across - 0.5, b0), pb = min(across + 0.5, b1);
-    float cover = clamp(pb - pa, 0.0, 1.0);
-    /* The band's ends on the face this pixel lies over (band_ends.py): the pixel's centre on
-     * the body's side of each cut. Two bands meeting on a cut then split its pixels exactly
-     * (a filtered cut would leave a seam: bands blend over each other, they do not add); the
-     * jittered samples antialias the cut as they do the outline. */
-    bool on_f1 = across * edge_far.z >= 0.0;
-    vec2 cut0 = on_f1 ? edge_cut0.xy : edge_cut0.zw, cut1 = on_f1 ? edge_cut1.xy : edge_cut1.zw;
-    if (dot(pc - edge_screen.xy, cut0) < 0.0 || dot(pc - edge_far.xy, cut1) < 0.0) {
-      discard;
-    }
-    float W = clamp(tint.w * cover, 0.0, 1.0) * ramp;
-    vec4 wide = vec4(0.0);
-    if (W > 0.0 && b1 > b0) {
-      /* Fractions of the band from vis.lo's end. */
-      float fa = (pa - ends.x) / (ends.y - ends.x), fb = (pb - ends.x) / (ends.y - ends.x);
-      ElArc sub = el_sub_arc(g, clamp(min(fa, fb), 0.0, 1.0), clamp(max(fa, fb), 0.0, 1.0));
-      vec3 col = method == EL_METHOD_QUADRATURE ? el_edge_colour_quadrature(sub, X, V) : el_edge_colour(sub, X, V, edge_dir);
-      wide = vec4(col * W, W);
-    }
-    result = mix(result, wide, t_wide);
-  }
+  vec4 result = el_band_pixel(pc, X, V, world_per_px, across);
   if (!(result.w > 0.0)) {
     discard;
   }
   out_color = result;
 }
-#endif

@@ -1,37 +1,3 @@
-/* Half the quad's width in pixels at world point `at` on the edge: half a pixel past the widest
- * the band can be there. */
-float el_half_width_px(vec3 at)
-{
-  float dist = frame.eye.w > 0.5 ? length(frame.eye.xyz - at) : 1.0;
-  float px_per_unit = frame.camera.x / max(dist, 1e-20);
-  /* The whole arc's projected width. Bands wider than a pixel lie where the fillet's image is
-   * (edge_band.glsl): up to its tangent length r tan(alpha / 2) = r |N1 - N2| / |N1 + N2| from
-   * the line on either side. The paper's method draws a one-pixel line whatever the width. */
-  float reach_px = 0.5 * edge_radius * length(edge_n1 - edge_n2) * px_per_unit;
-  int method = el_method();
-  if (method == EL_METHOD_PARTIAL || method == EL_METHOD_QUADRATURE) {
-    float tangent = length(edge_n1 - edge_n2) / max(length(edge_n1 + edge_n2), 1e-3);
-    reach_px = max(reach_px, edge_radius * tangent * px_per_unit);
-  }
-  float half_px = min(reach_px, 2048.0) + 0.5 + 1.0 / 64.0;
-  return method == EL_METHOD_PAPER ? max(half_px, 1.0 + 1.0 / 64.0) : half_px;
-}
-
-/* Where the band lies across the edge line at world point `at` (pixels along `across`, low and
- * high): the visible arc's image, as the fragment shader finds it per pixel (edge_band.glsl). */
-vec2 el_band_px(vec3 at, vec4 clip_at, vec2 across)
-{
-  bool persp = frame.eye.w > 0.5;
-  vec3 V = el_safe_normalize(persp ? frame.eye.xyz - at : -frame.view_dir.xyz);
-  float world_per_px = (persp ? length(frame.eye.xyz - at) : 1.0) / frame.camera.x;
-  ElArc g = el_arc(edge_dir, edge_n1, edge_n2, V);
-  vec3 P = el_safe_normalize(cross(el_safe_normalize(edge_dir), V));
-  vec4 q1 = frame.projection * (frame.view * vec4(at + P * world_per_px, 1.0));
-  float side = dot((q1.xy / q1.w - clip_at.xy / clip_at.w) * frame.viewport.xy, across) < 0.0 ? -1.0 : 1.0;
-  vec2 ends = el_band_ends(g, P, edge_fold) * (side * edge_radius / world_per_px);
-  return vec2(min(ends.x, ends.y), max(ends.x, ends.y));
-}
-
 /* Hidden pixels are rejected by the depth test against the surface pass before the fragment
  * shader runs (llvmpipe then skips whole blocks; a discard does not end its fragments). The
  * quad's depth at an end is that end pulled toward the eye by more than the fragment shader's
@@ -176,43 +142,14 @@ void main()
     return;
   }
 
-  /* Short edges: shaded once, at the midpoint, by the edge's one shading vertex (corner.w = 1),
-   * which provides both triangles' flat outputs (passes/batches.py). */
-  edge_color = vec4(0.0);
-  edge_arc = vec2(0.0);
-  /* Only the methods that use one colour per edge need it (edge_band.glsl). */
-  bool whole_arc = el_method() == EL_METHOD_WHOLE || el_method() == EL_METHOD_PAPER;
-  if (whole_arc && len < EL_SHADE_PER_EDGE_BELOW_PX && corner.w > 0.5) {
-    vec3 Vu = el_safe_normalize(Vm);
-    ElArc g = el_arc(edge_dir, edge_n1, edge_n2, Vu);
-    edge_color = vec4(el_edge_colour(g, mid, Vu, edge_dir), 1.0);
-    edge_arc = vec2(g.width, sqrt(dot(g.view, g.view))); /* visible width, |E x V| */
-  }
-
   /* The quad's sides, the same offsets from the line at both ends: a parallelogram, so that
    * edge_point interpolates to the foot of each pixel's perpendicular on the line (a trapezoid
-   * would skew it). Half a pixel past the band's reach on either side (the larger of the two
-   * ends'), or, with the per-pixel method, past where the band really lies (mostly on one side
-   * of the line): the union of its extents at both ends, widened by how far it can move as the
-   * view ray turns along the edge, within the reach. Fewer pixels run the fragment shader; none
-   * it would light is left out (tests/native/render/test_edge_culling.cpp). */
+   * would skew it). Half a pixel past where the band lies (edge_band_extent.glsl), within its
+   * reach (the larger of the two ends'). Fewer pixels run the fragment shader; none it would
+   * light is left out (tests/native/render/test_edge_culling.cpp). */
   float half_px = max(el_half_width_px(w0), el_half_width_px(w1));
-  float reach = half_px - 0.5 - 1.0 / 64.0;
-  float lo = -reach, hi = reach;
-  int method = el_method();
-  if (EL_TIGHT_QUADS && (method == EL_METHOD_PARTIAL || method == EL_METHOD_QUADRATURE)) {
-    vec2 b0 = el_band_px(w0, c0, across), b1 = el_band_px(w1, c1, across);
-    bool persp = frame.eye.w > 0.5;
-    vec3 E = el_safe_normalize(edge_dir);
-    vec3 V0 = el_safe_normalize(persp ? frame.eye.xyz - w0 : -frame.view_dir.xyz);
-    vec3 V1 = el_safe_normalize(persp ? frame.eye.xyz - w1 : -frame.view_dir.xyz);
-    /* The band turns with P = E x V / |E x V|: by about the ray's turn over |E x V|. */
-    float turn = 2.0 * asin(min(0.5 * length(V1 - V0), 1.0));
-    float s_min = max(min(length(cross(E, V0)), length(cross(E, V1))), 1e-3);
-    float margin = reach * min(4.0 * turn / s_min, 1.0) + 1.0 / 32.0;
-    lo = clamp(min(b0.x, b1.x) - margin, -reach, reach);
-    hi = clamp(max(b0.y, b1.y) + margin, lo, reach);
-  }
+  vec2 sides = el_quad_sides(w0, w1, c0, c1, across, half_px - 0.5 - 1.0 / 64.0);
+  float lo = sides.x, hi = sides.y;
   float offset = corner.y < 0.0 ? lo - 0.5 - 1.0 / 64.0 : hi + 0.5 + 1.0 / 64.0;
 
   /* Past each end as far as a cut there leans outwards on screen (at most the edge's own image

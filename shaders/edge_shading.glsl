@@ -1,6 +1,6 @@
 /* Colour of a rounded edge at world point X seen along unit V: ambient plus, per light, the
- * diffuse and specular arc means (highlight_arc.glsl). Shared by the vertex shader (short edges,
- * shaded once at their midpoint) and the fragment shader (long edges, shaded per pixel). */
+ * diffuse and specular arc means (highlight_arc.glsl) over the arc `g` (the part of it a pixel
+ * sees: edge_band_pixel.glsl). */
 vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
 {
   float n = spec_color.w;
@@ -16,7 +16,3 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
   }
   return col;
 }
-
-/* Edges shorter than this on screen are shaded once per edge: their colour barely changes
- * along them, and per-pixel shading cost most of the pass on dense meshes. */
-#define EL_SHADE_PER_EDGE_BELOW_PX 16.0

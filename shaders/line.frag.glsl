@@ -1,7 +1,8 @@
-/* Ink line pass: a round-capped stroke around the segment, box-filtered across its width, so
- * strokes that share an end overlap at the join with no gap at any angle. Visibility is decided
- * on the centre line (so the whole width of a stroke agrees) against the surface pass's ids and
- * depth.
+/* Ink line pass: a round-capped stroke around the node (a segment, or a chord standing for up to
+ * 8 segments: line.vert.glsl), box-filtered across its width, so strokes that share an end
+ * overlap at the join with no gap at any angle. Visibility is decided on the centre line (so the
+ * whole width of a stroke agrees) against the surface pass's ids and depth; a node's own faces
+ * (line_faces0..3, 0 = none) are those of every segment it stands for.
  * The output depth is 1 - alpha: with a LESS depth test each pixel keeps its most opaque stroke
  * instead of stacking the overlapping caps of a chain, which would darken its joins. */
 
@@ -9,6 +10,15 @@
 float el_band_coverage(float d, float r)
 {
   return max(min(d + r, 0.5) - max(d - r, -0.5), 0.0);
+}
+
+/* Whether id (instance, face) is one of the node's own faces, of this instance. */
+bool el_own_face(vec2 id)
+{
+  vec4 y = vec4(id.y);
+  return id.x == line_vis.z && id.y > 0.0 &&
+         (any(equal(y, line_faces0)) || any(equal(y, line_faces1)) || any(equal(y, line_faces2)) ||
+          any(equal(y, line_faces3)));
 }
 
 void main()
@@ -35,7 +45,7 @@ void main()
     discard;
   }
   /* Visibility from the surface pass's ids (docs/lines.md, "Visibility"): visible where one of
-   * the segment's own faces (line_faces, of this instance: line_vis.z) shows in the 3x3 pixels
+   * the node's own faces (line_faces0..3, of this instance: line_vis.z) shows in the 3x3 pixels
    * around the centre point, or else where what shows is no nearer than the line within half a
    * pixel's footprint. What shows is the centre pixel's surface; for a line that can lie on an
    * outline (line_vis.w: silhouettes, borders, contours) it is the farthest of the 3x3 pixels
@@ -52,13 +62,13 @@ void main()
   float inv_other = inv_c;
   /* Most ink lies on one of its own faces at the centre pixel: then the 3x3 walk is skipped
    * (whole 4x4 blocks of a stroke usually agree, so llvmpipe skips it too). */
-  bool own = id_c.x == line_vis.z && id_c.y > 0.0 && (id_c.y == line_faces.x || id_c.y == line_faces.y);
+  bool own = el_own_face(id_c);
   if (!own) {
     for (int dy = -1; dy <= 1; dy++) {
       for (int dx = -1; dx <= 1; dx++) {
         ivec2 at = clamp(q + ivec2(dx, dy), ivec2(0), size);
         vec2 id = texelFetch(surface_id, at, 0).rg;
-        own = own || (id.x == line_vis.z && id.y > 0.0 && (id.y == line_faces.x || id.y == line_faces.y));
+        own = own || el_own_face(id);
         if (id != id_c) {
           inv_other = min(inv_other, texelFetch(surface_depth, at, 0).r);
         }

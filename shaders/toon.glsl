@@ -1,4 +1,4 @@
-/* Toon shading (seed 003's shade ramp, seed 004's X-Toon). toon.x: the mode (surface.frag.glsl's
+/* Toon shading (a shade ramp, or X-Toon). toon.x: the mode (surface.frag.glsl's
  * EL_SURFACE_MODE, for reference); toon.yz:
  * X-Toon near and far distances; toon.w: 1 if the ramp interpolates (else stepped) + 2 if
  * X-Toon's y is orientation N.V (else depth). */

@@ -26,9 +26,10 @@ def surface_batches(extract):
     return out
 
 
-# Corner table of an edge quad: (end, side). Corner 0 is the edge's shading vertex: it alone
-# integrates a short edge's arc (edge_highlight.vert.glsl) and both triangles take their flat
-# varyings from it, so it starts both (first-vertex backends) or ends both (last-vertex ones).
+# Corner table of an edge quad: (end, side). Corner 0 is the edge's shading vertex (corner.w =
+# 1): under the benchmarks' whole-arc methods it alone integrates a short edge's arc
+# (bench/shaders/edge_methods.vert.glsl) and both triangles take their flat varyings from it, so
+# it starts both (first-vertex backends) or ends both (last-vertex ones).
 # All shading vertices come first in the buffer: vertex SIMD groups then either all shade or
 # none do.
 _QUAD_CORNERS = np.array([[0, -1], [0, 1], [1, -1], [1, 1]], dtype=np.float32)

@@ -1,49 +1,117 @@
-"""Ink line pass: line segments -> screen-space quads (line.vert.glsl), drawn into the line
-target, where each pixel keeps its most opaque stroke (line.frag.glsl)."""
+"""Ink line pass: chains of line segments -> screen-space quads (line.vert.glsl), drawn into the
+line target, where each pixel keeps its most opaque stroke (line.frag.glsl).
+
+Lines at the screen's resolution (docs/lines.md): each chain (lines.LineSegments.chain_links)
+is cut into groups of up to LOD_GROUP consecutive segments, and each group is a binary tree of
+chords over them, the segments its leaves; a chord carries a bound on how far (object space)
+the segments it stands for stray from it. The library writes one record per segment
+(native.line_nodes): its ends, its ancestors' bounds and, for the chords it is the first
+segment of, their lengths in segments. Per view and instance the vertex shader finds the
+coarsest chord on each segment's path whose projected bound is within TOLERANCE_PX and draws it
+from its first segment (the others draw nothing), skips crease chains whose whole projection
+fits in SUBPIXEL_PX, and, with hidden lines off, every quad the visibility rule would hide at
+every pixel. The records live in two float textures per line set (NODE_TEXELS texels and two
+faces a segment), so a batch's vertices carry one integer each.
+"""
 import gpu
 import numpy as np
 
+from .. import compat, native
 from . import shader_lib
 
-# Corners of a segment's quad: (end, side); two triangles 0-1-3, 0-3-2.
-_CORNERS = np.array([[0, -1], [0, 1], [1, -1], [1, 1]], dtype=np.float32)
-_TRIS = np.array([0, 1, 3, 0, 3, 2], dtype=np.int64)
 # Relative part of the depth bias (line.frag.glsl), against float rounding of depths.
 REL_BIAS = 1e-4
 # Line types that can lie on an outline: the background beside them does not hide them.
 OUTLINE_TYPES = frozenset({"silhouette", "border", "contour", "wire"})
 
+# A chord is drawn for the segments it stands for when none of them strays farther than this
+# from it on screen (pixels; a bound, docs/lines.md derives it).
+TOLERANCE_PX = 0.25
+# Crease chains whose whole projection fits in a disc this wide (pixels) are not drawn.
+SUBPIXEL_PX = 1.0
+# Quads that the visibility rule would hide at every pixel are not rasterised (hidden lines
+# off); False draws them (the tests compare both).
+CULL_HIDDEN = True
+# Segments per simplification group: a chord stands for at most this many (its faces: twice as
+# many, line_faces0..3 in the shaders).
+LOD_GROUP = native.LINE_GROUP
+# Layout of the record texture (line.vert.glsl): NODE_TEXELS texels a segment, NODES_PER_ROW
+# segments a row (4095 texels: a record never straddles two rows); the face texture:
+# FACES_PER_ROW segments a row.
+NODE_TEXELS = native.LINE_NODE_FLOATS // 4
+NODES_PER_ROW = 819
+FACES_PER_ROW = 4096
 
-def line_batch(seg, start=0, stop=None):
-    """GPUBatch of segments [start, stop) of one LineSegments, or None when that is empty."""
-    stop = len(seg) if stop is None else min(stop, len(seg))
+
+class LineNodes:
+    """The records of one LineSegments, as the library writes them (native.line_nodes), as
+    (N, NODE_TEXELS, 4) texels, and the segments' faces (N, 2), both in chain order."""
+
+    def __init__(self, seg, chain_spheres=True):
+        nodes, order = native.line_nodes(seg.p0, seg.p1, seg.taper, getattr(seg, "chain_links", None), chain_spheres)
+        self.nodes = nodes.reshape(-1, NODE_TEXELS, 4)
+        faces = seg.faces if seg.faces is not None else np.zeros((len(seg), 2), np.float32)
+        self.faces = np.ascontiguousarray(np.asarray(faces, np.float32)[order])
+
+    def __len__(self):
+        return len(self.nodes)
+
+
+def _rows(data, per_row, texels_per_item, channels):
+    """(items, ...) float32 -> ((w, h), flat Buffer) of a float texture holding per_row items a
+    row, zero-padded."""
+    rows = max(1, -(-len(data) // per_row))
+    flat = np.zeros((rows * per_row, texels_per_item * channels), np.float32)
+    flat[:len(data)] = np.asarray(data, np.float32).reshape(len(data), -1)
+    flat = flat.reshape(-1)
+    return (per_row * texels_per_item, rows), gpu.types.Buffer('FLOAT', flat.size, flat)
+
+
+class LineSet:
+    """One line type's set of one geometry (or one instance's view-dependent set) on the GPU:
+    its record and face textures and the batches that draw them (several in a final render, so a
+    cancel lands between them). count: its segments."""
+
+    def __init__(self, seg, chunk=None, chain_spheres=True):
+        self.count = len(seg)
+        rows = -(-len(seg) // NODES_PER_ROW)
+        limit = gpu.capabilities.max_texture_size_get()
+        if rows > limit:
+            raise RuntimeError(f"{len(seg)} line segments of one type in one object; the GPU holds at most "
+                               f"{limit * NODES_PER_ROW}")
+        records = LineNodes(seg, chain_spheres)
+        size, buf = _rows(records.nodes, NODES_PER_ROW, NODE_TEXELS, 4)
+        self.nodes = compat.texture(size, 'RGBA32F', buf)
+        size, buf = _rows(records.faces, FACES_PER_ROW, 1, 2)
+        self.faces = compat.texture(size, 'RG32F', buf)
+        # Any split works: a chord is drawn from its first segment's record and the textures.
+        n = len(records)
+        step = chunk or max(n, 1)
+        self.batches = [_batch(i, min(i + step, n)) for i in range(0, n, step)]
+
+
+def _batch(start, stop):
+    """GPUBatch of segments [start, stop) in chain order: four vertices each, `node` = 4 *
+    segment + corner."""
     n = stop - start
-    if n <= 0:
-        return None
     fmt = gpu.types.GPUVertFormat()
-    faces = seg.faces if seg.faces is not None else np.zeros((len(seg), 2), np.float32)
-    attrs = {"p0": seg.p0, "p1": seg.p1, "n1": seg.n1, "n2": seg.n2, "taper": seg.taper, "faces": faces}
-    for name, a in attrs.items():
-        fmt.attr_add(id=name, comp_type='F32', len=a.shape[1], fetch_mode='FLOAT')
-    fmt.attr_add(id="corner", comp_type='F32', len=2, fetch_mode='FLOAT')
+    fmt.attr_add(id="node", comp_type='I32', len=1, fetch_mode='INT')
     vbo = gpu.types.GPUVertBuf(fmt, 4 * n)
-    for name, a in attrs.items():
-        vbo.attr_fill(name, np.repeat(np.ascontiguousarray(a[start:stop], np.float32), 4, axis=0))
-    vbo.attr_fill("corner", np.tile(_CORNERS, (n, 1)))
-    idx = (np.repeat(np.arange(n) * 4, 6) + np.tile(_TRIS, n)).astype(np.int32).reshape(-1, 3)
+    vbo.attr_fill("node", np.arange(4 * start, 4 * stop, dtype=np.int32))
+    # Corners: 0 (a, -1), 1 (a, +1), 2 (b, -1), 3 (b, +1); triangles 0-1-3, 0-3-2.
+    quad = np.array([0, 1, 3, 0, 3, 2], dtype=np.int32)
+    idx = (np.arange(n, dtype=np.int32)[:, None] * 4 + quad[None, :]).reshape(-1, 3)
     return gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
 
 
 def line_batches(segments, chunk=None):
-    """type -> ([GPUBatch, ...], count) for the non-empty sets of `segments` (type ->
-    LineSegments). With `chunk`, each batch holds at most that many segments, so a final render
-    can check for a cancel between them; the viewport draws each set as one batch."""
+    """type -> LineSet for the non-empty sets of `segments` (type -> LineSegments). With
+    `chunk`, each batch holds at most that many segments, so a final render can check for a
+    cancel between them; the viewport draws each set as one batch."""
     out = {}
     for kind, seg in segments.items():
-        step = chunk or max(len(seg), 1)
-        parts = [b for b in (line_batch(seg, i, i + step) for i in range(0, len(seg), step)) if b is not None]
-        if parts:
-            out[kind] = (parts, len(seg))
+        if len(seg):
+            out[kind] = LineSet(seg, chunk, chain_spheres=kind == "crease")
     return out
 
 
@@ -51,8 +119,13 @@ def _mat(m):
     return np.asarray(m, dtype=np.float32).T.reshape(-1)
 
 
+def _stretch(m):
+    """The largest factor by which the linear part of model matrix m stretches a length."""
+    return float(np.linalg.norm(np.asarray(m, np.float64)[:3, :3], 2))
+
+
 def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None):
-    """instances: [(model matrix, {type: ([batch, ...], count)}, surface id of the instance)];
+    """instances: [(model matrix, {type: LineSet}, surface id of the instance)];
     types drawn in settings' order. checkpoint(), when given, runs after each batch; True stops the pass (a cancel):
     returns whether it stopped."""
     if settings is None and targets.lines_empty:
@@ -69,20 +142,31 @@ def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None):
         gpu.state.face_culling_set('NONE')
         shader.bind()
         shader.uniform_block("frame", ubo)
-        shader.uniform_sampler("surface_depth", targets.surface_depth)
-        shader.uniform_sampler("surface_id", targets.surface_id)
+        shader_lib.set_sampler(shader, "surface_depth", targets.surface_depth)
+        shader_lib.set_sampler(shader, "surface_id", targets.surface_id)
+        stretch = {}
         for kind, style in settings.styles:
-            shader.uniform_float("line_color", (*style.color, style.opacity))
-            shader.uniform_float("line_style", (style.width, 1.0 if style.scene_units else 0.0, style.min_pixels, style.taper))
-            for matrix, batches, instance_id in instances:
-                entry = batches.get(kind)
+            shader_lib.set_uniform(shader, "line_color", (*style.color, style.opacity))
+            shader_lib.set_uniform(shader, "line_style", (style.width, 1.0 if style.scene_units else 0.0, style.min_pixels, style.taper))
+            for matrix, sets, instance_id in instances:
+                entry = sets.get(kind)
                 if entry is None:
                     continue
-                shader.uniform_float("model", _mat(matrix))
-                shader.uniform_float("line_vis", (settings.hidden_opacity, REL_BIAS, float(instance_id),
-                                                  1.0 if kind in OUTLINE_TYPES else 0.0))
-                stats.lines_drawn += entry[1]
-                for batch in entry[0]:
+                key = id(matrix)
+                if key not in stretch:
+                    stretch[key] = _stretch(matrix)
+                shader_lib.set_uniform(shader, "model", _mat(matrix))
+                shader_lib.set_uniform(shader, "line_vis", (settings.hidden_opacity, REL_BIAS, float(instance_id),
+                                                            1.0 if kind in OUTLINE_TYPES else 0.0))
+                # A chord's width is interpolated between its ends: a taper, whose peak a chord
+                # could span, is drawn segment by segment.
+                shader_lib.set_uniform(shader, "line_lod", (TOLERANCE_PX if style.taper <= 0.0 else -1.0,
+                                                            SUBPIXEL_PX if kind == "crease" else 0.0,
+                                                            stretch[key], 1.0 if CULL_HIDDEN else 0.0))
+                shader_lib.set_sampler(shader, "line_nodes", entry.nodes)
+                shader_lib.set_sampler(shader, "line_faces", entry.faces)
+                stats.lines_drawn += entry.count
+                for batch in entry.batches:
                     batch.draw(shader)
                     if checkpoint is not None and checkpoint():
                         gpu.state.depth_test_set('NONE')

@@ -4,7 +4,11 @@ Programs are created lazily, inside a GPU context (render() or view_draw()), and
 life of the add-on; sources are read from the `shaders` folder beside the package (installed
 layout) or at the repository root (development tree). A typedef that is a JSON spec
 (frame_data.json) becomes GLSL here (shader_specs.typedef_glsl).
+
+use_variant() lets a benchmark or test build one program from its own description and sources
+(the edge pass's earlier methods: bench/edge_methods.py); the add-on never calls it.
 """
+import json
 import os
 
 import gpu
@@ -15,12 +19,17 @@ from .shader_specs import shader_dir
 _cache = {}
 # id(program) -> (its declared push constants, those its compiler kept, its declared samplers).
 _names = {}
+# Program name -> (description, folder read before shaders/, defines, key) set by use_variant().
+_variants = {}
 
 
-def _read(name):
+def _read(name, source_dir=None):
     if name.endswith(".json"):
         return shader_specs.typedef_glsl(name)
-    with open(os.path.join(shader_dir(), name), encoding="utf-8") as f:
+    path = os.path.join(source_dir, name) if source_dir else None
+    if path is None or not os.path.isfile(path):
+        path = os.path.join(shader_dir(), name)
+    with open(path, encoding="utf-8") as f:
         return f.read()
 
 
@@ -28,11 +37,12 @@ def get(name, defines=None):
     """The compiled program `name`, built on first use; `defines` ({NAME: value}) fix choices
     at build time (a variant per set), where a uniform branch would cost every fragment both
     sides on llvmpipe."""
-    key = (name, tuple(sorted((defines or {}).items())))
+    d, source_dir, fixed, variant = _variants.get(name) or (shader_specs.program(name), None, {}, None)
+    defines = {**(defines or {}), **fixed}
+    key = (name, variant, tuple(sorted(defines.items())))
     shader = _cache.get(key)
     if shader is None:
-        d = shader_specs.program(name)
-        shader = _cache[key] = _build(name, d, defines or {})
+        shader = _cache[key] = _build(name, d, defines, source_dir)
         declared = [var for _, var in d["push_constants"]]
         _names[id(shader)] = (frozenset(declared), frozenset(v for v in declared if _kept(shader, v)),
                               frozenset(var for _, var in d["samplers"]))
@@ -43,7 +53,7 @@ def set_uniform(shader, name, value):
     """Sets push constant `name` of a program from get() if its variant's compiler kept it.
 
     A variant's compiler drops what its code does not read (spec_color in a toon surface,
-    table_params in an edge method without the table), and Blender refuses to set a dropped
+    lighting inputs in the edge pass's no-shading benchmark variant), and Blender refuses to set a dropped
     uniform; the callers set everything the pass has and need not know which variant reads what.
     A name programs.json does not declare for the program is still an error."""
     declared, kept, _ = _names[id(shader)]
@@ -70,12 +80,26 @@ def _kept(shader, name):
     return True
 
 
-def _build(name, d, defines):
+def use_variant(name, description=None, source_dir=None, defines=None):
+    """Builds program `name` from `description` (in the form of a programs.json entry) instead
+    of programs.json's, its files read from `source_dir` where they are there and from shaders/
+    otherwise, with `defines` added to every build; without a description, programs.json's own
+    again. For the benchmarks and tests that compare a pass with variants kept outside the
+    add-on (bench/edge_methods.py): the add-on itself never calls it. Built programs stay cached
+    (freeing one that a draw still refers to can crash Blender), so switching back costs nothing."""
+    if description is None:
+        _variants.pop(name, None)
+        return
+    variant = (json.dumps(description, sort_keys=True), source_dir)
+    _variants[name] = (description, source_dir, dict(defines or {}), variant)
+
+
+def _build(name, d, defines, source_dir=None):
     info = gpu.types.GPUShaderCreateInfo()
     for define, value in sorted(defines.items()):
         info.define(define, str(value))
     if d["typedefs"]:
-        info.typedef_source("\n".join(_read(f) for f in d["typedefs"]))
+        info.typedef_source("\n".join(_read(f, source_dir) for f in d["typedefs"]))
     for slot, type_name, var in d["uniform_bufs"]:
         info.uniform_buf(slot, type_name, var)
     for type_name, var in d["push_constants"]:
@@ -92,10 +116,10 @@ def _build(name, d, defines):
     for slot, (type_name, var) in enumerate(d["samplers"]):
         info.sampler(slot, type_name, var)
     # Outputs a variant adds (a render pass asked for) follow the program's own.
-    for slot, (type_name, var) in enumerate(shader_specs.fragment_outputs(name, defines)):
+    for slot, (type_name, var) in enumerate(shader_specs.outputs_of(d, defines)):
         info.fragment_out(slot, type_name, var)
-    info.vertex_source("\n".join(_read(f) for f in d["vertex"]))
-    info.fragment_source("\n".join(_read(f) for f in d["fragment"]))
+    info.vertex_source("\n".join(_read(f, source_dir) for f in d["vertex"]))
+    info.fragment_source("\n".join(_read(f, source_dir) for f in d["fragment"]))
     try:
         return gpu.shader.create_from_info(info)
     except Exception as e:

@@ -40,10 +40,20 @@ def program(name):
     return load("programs.json")[name]
 
 
+def enum(file_name, name):
+    """{KEY: value} of enum `name` of the typedef spec shaders/FILE_NAME (EL_SURFACE_MODE of
+    surface_modes.json, EL_LIGHT of frame_data.json)."""
+    return load(file_name)["enums"][name]
+
+
 def fragment_outputs(name, defines):
     """[(type, name)] of a program variant's fragment outputs in slot order: fragment_out, then
     each fragment_out_if whose define is set, in the defines' sorted order."""
-    d = program(name)
+    return outputs_of(program(name), defines)
+
+
+def outputs_of(d, defines):
+    """fragment_outputs of the program description `d` (a programs.json entry)."""
     outs = list(d["fragment_out"])
     for define, extra in sorted(d.get("fragment_out_if", {}).items()):
         if define in (defines or {}):

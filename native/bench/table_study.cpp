@@ -1,4 +1,4 @@
-// Table study (issue 6, docs/highlight_math.md "Table study"): for each candidate F(phi, m) table
+// Table study (docs/highlight_math.md, "Table study"): for each candidate F(phi, m) table
 // (layout x size), its byte size, its maximum absolute and relative error against the exact F in
 // double over a dense (phi, m) grid, and its lookup cost (Google Benchmark, in the same run, as a
 // ratio to the paper's 1024 x 128). Prints Markdown.

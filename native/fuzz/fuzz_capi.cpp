@@ -1,4 +1,4 @@
-// libFuzzer target for the whole C ABI (issue 6): bytes become meshes (any counts, indices in and
+// libFuzzer target for the whole C ABI: bytes become meshes (any counts, indices in and
 // out of range, NaN/Inf/huge/denormal positions, degenerate faces, optional host topology), cameras,
 // table descriptors and highlight inputs, and every el_* entry point is called with them. The
 // library must answer each call with a status, never crash, and never trip ASan or UBSan.

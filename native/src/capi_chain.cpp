@@ -75,4 +75,30 @@ EL_API el_status el_view_chain_contours(const el_view* view, el_chain_link* out_
     });
 }
 
+EL_API el_status el_line_nodes(const float* p0, const float* p1, const float* taper, const el_chain_link* links,
+                               uint32_t count, uint32_t flags, float* out_nodes, uint32_t capacity_nodes,
+                               uint32_t* out_order) {
+    return guarded("el_line_nodes", [&] {
+        if (count == 0) return;
+        require(p0, "p0");
+        require(p1, "p1");
+        require(taper, "taper");
+        require(out_nodes, "out_nodes");
+        require(out_order, "out_order");
+        if (count >= (1u << 24))
+            el::fail(EL_ERR_INVALID_COUNT, "count " + std::to_string(count) + " is not below 2^24");
+        if (flags & ~EL_LINE_NODES_CHAIN_SPHERES)
+            el::fail(EL_ERR_INVALID_ARGUMENT, "unknown flags " + std::to_string(flags));
+        require_capacity(capacity_nodes, count, "capacity_nodes");
+        for (uint32_t i = 0; i < count; ++i) {
+            el::require_finite3(p0 + 3 * size_t(i), "p0");
+            el::require_finite3(p1 + 3 * size_t(i), "p1");
+        }
+        const el::LineNodes r =
+            el::build_line_nodes(p0, p1, taper, links, count, (flags & EL_LINE_NODES_CHAIN_SPHERES) != 0);
+        std::copy(r.nodes.begin(), r.nodes.end(), out_nodes);
+        std::copy(r.order.begin(), r.order.end(), out_order);
+    });
+}
+
 }  // extern "C"

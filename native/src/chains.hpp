@@ -27,4 +27,16 @@ struct Chains {
 // are chains of their own.
 Chains build_chains(const std::vector<ChainItem>& items);
 
+// The line pass's nodes (el_line_nodes in edgelight.h): segments put in chain order (by chain,
+// then arc length; `links` null: each segment a chain of its own), cut into groups of up to
+// EL_LINE_GROUP consecutive segments of one chain, each group a binary tree of chords over them,
+// halved recursively; one record of EL_LINE_NODE_FLOATS floats per segment, in chain order.
+// order[i] is the segment at place i of the chain order.
+struct LineNodes {
+    std::vector<float> nodes;
+    std::vector<uint32_t> order;
+};
+LineNodes build_line_nodes(const float* p0, const float* p1, const float* taper, const el_chain_link* links,
+                           uint32_t count, bool chain_spheres);
+
 }  // namespace el

@@ -89,16 +89,7 @@ std::array<float, 3> default_eye(const std::vector<float>& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    Args args;
-    try {
-        args = parse(argc, argv);
-    } catch (const std::exception& e) {
-        std::cerr << "edgelight-info: " << e.what() << "\n"
-                  << kUsage;
-        return 2;
-    }
-    try {
-        if (el_abi_version() != EL_ABI_VERSION) throw std::runtime_error("libedgelight ABI mismatch");
+    return el_tools::run_tool<Args>("edgelight-info", kUsage, argc, argv, parse, [](const Args& args) {
         const el_tools::LoadedMesh loaded = el_tools::load_mesh(args.mesh);
         el_mesh_desc d{};
         d.positions = loaded.positions.data();
@@ -153,7 +144,5 @@ int main(int argc, char** argv) {
         };
         std::cout << out.dump(2) << "\n";
         return 0;
-    } catch (...) {
-        return el_tools::report_failure("edgelight-info", args.mesh);
-    }
+    });
 }

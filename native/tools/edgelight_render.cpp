@@ -148,16 +148,7 @@ el_tools::Camera camera_for(const Args& a, const std::vector<float>& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    Args args;
-    try {
-        args = parse(argc, argv);
-    } catch (const std::exception& e) {
-        std::cerr << "edgelight-render: " << e.what() << "\n"
-                  << kUsage;
-        return 2;
-    }
-    try {
-        if (el_abi_version() != EL_ABI_VERSION) throw std::runtime_error("libedgelight ABI mismatch");
+    return el_tools::run_tool<Args>("edgelight-render", kUsage, argc, argv, parse, [](const Args& args) {
         const auto t0 = std::chrono::steady_clock::now();
         const el_tools::LoadedMesh mesh = el_tools::load_mesh(args.mesh);
         const el_tools::Camera camera = camera_for(args, mesh.positions);
@@ -185,7 +176,5 @@ int main(int argc, char** argv) {
                   << mesh.triangles.size() / 3 << " triangles, " << scene.edges.size() << " rounded edges, "
                   << args.samples << " samples, " << long(ms) << " ms on " << context.description() << "\n";
         return 0;
-    } catch (...) {
-        return el_tools::report_failure("edgelight-render", args.mesh);
-    }
+    });
 }

@@ -36,9 +36,9 @@ struct Sun {
     glm::dvec3 color{3.0};
 };
 
-// Sub-pixel offset of sample s (Halton 2, 3; sample 0 is the pixel centre), as frame.jitter().
+// Sub-pixel offset of sample s (Halton 2, 3; sample 0 is the pixel centre), as passes/camera.py's jitter().
 glm::dvec2 jitter(int sample);
-// projection moved by (dx, dy) pixels, as frame.jittered_projection().
+// projection moved by (dx, dy) pixels, as passes/camera.py's jittered_projection().
 glm::dmat4 jittered_projection(const glm::dmat4& projection, int width, int height, glm::dvec2 d);
 
 // Axis-aligned bounds of xyz triples (what cameras frame).

@@ -19,6 +19,9 @@ namespace {
 constexpr GLenum kProvokingGl = GL_LAST_VERTEX_CONVENTION;
 constexpr Provoking kProvoking = Provoking::last;
 
+// The edge pass's benchmark and test variants (Scene::edge_method, tight_edge_quads, edge_floor).
+constexpr const char* kEdgeVariants = EDGELIGHT_BENCH_SHADER_DIR "/edge_methods.json";
+
 void check(el_status s) {
     if (s != EL_OK) throw std::runtime_error(std::string(el_status_name(s)) + ": " + el_last_error());
 }
@@ -54,16 +57,21 @@ struct Renderer::Impl {
         : dir(shader_dir), passes(read_pass_specs(dir)), frame_block(dir, "frame_data.json"),
           surface(assemble_program(dir, "surface")), composite(assemble_program(dir, "composite")) {}
 
-    // The edge program of one method, with the table's defines of shaders/passes.json.
-    // tight_quads false: the test variant; floor: the benchmark's shading-free variant.
+    // The edge program with the table's defines of shaders/passes.json: the add-on's (method 0,
+    // fitted quads, shaded), else the test and benchmark variant of bench/shaders/edge_methods.json
+    // (another method, quads symmetric about the line, the shading-free floor).
     const Program& edge(int method, bool tight_quads, bool floor) {
         auto& p = edge_programs[{method, tight_quads, floor}];
         if (!p) {
             auto defines = table_defines(passes.pass("edge_highlight"), table_info);
-            defines.emplace_back("EL_EDGE_METHOD", std::to_string(method));
-            defines.emplace_back("EL_TIGHT_QUADS", tight_quads ? "true" : "false");
-            if (floor) defines.emplace_back("EL_EDGE_FLOOR", "1");
-            p = std::make_unique<Program>(assemble_program(dir, "edge_highlight", defines));
+            if (method == 0 && tight_quads && !floor) {
+                p = std::make_unique<Program>(assemble_program(dir, "edge_highlight", defines));
+            } else {
+                defines.emplace_back("EL_EDGE_METHOD", std::to_string(method));
+                defines.emplace_back("EL_TIGHT_QUADS", tight_quads ? "true" : "false");
+                if (floor) defines.emplace_back("EL_EDGE_FLOOR", "1");
+                p = std::make_unique<Program>(assemble_variant(dir, kEdgeVariants, defines));
+            }
         }
         return *p;
     }

@@ -34,9 +34,11 @@ struct Scene {
     Material material;
     std::vector<Sun> suns;
     glm::dvec3 ambient{0.05, 0.05, 0.06};  // world colour of the sample scenes
-    // How the edge pass shades bands (shaders/edge_band.glsl): 0 per-pixel part of the arc (the
-    // add-on's), 1 the whole visible arc's mean everywhere (what el_highlight_reference computes
-    // for one point), 2 the paper's 1-pixel line, 3 as 0 by brute-force quadrature.
+    // How the edge pass shades bands: 0 per-pixel part of the arc (the add-on's,
+    // shaders/edge_band_pixel.glsl); the benchmarks' and tests' variants
+    // (bench/shaders/edge_methods.json): 1 the whole visible arc's mean everywhere (what
+    // el_highlight_reference computes for one point), 2 the paper's 1-pixel line, 3 as 0 by
+    // brute-force quadrature.
     int edge_method = 0;
     // The edge pass depth-tests its quads against the surface pass so hidden pixels skip the
     // fragment shader (its state in shaders/passes.json); off only to check that this rejects

@@ -74,11 +74,16 @@ bool ends_with(const std::string& s, const std::string& end) {
     return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
 }
 
-std::string join_files(const std::string& dir, const json& files) {
+bool is_file(const std::string& path) { return std::ifstream(path).good(); }
+
+// The files' texts, each read from `first_dir` when it is there (a variant's folder) and from
+// `dir` (shaders/) otherwise.
+std::string join_files(const std::string& dir, const json& files, const std::string& first_dir = "") {
     std::string out;
     for (const auto& f : files) {
         const std::string name = f.get<std::string>();
-        const std::string text = ends_with(name, ".json") ? typedef_glsl(dir, name) : read_text(dir + "/" + name);
+        const std::string path = !first_dir.empty() && is_file(first_dir + "/" + name) ? first_dir + "/" + name : dir + "/" + name;
+        const std::string text = ends_with(name, ".json") ? typedef_glsl(dir, name) : read_text(path);
         out += "/* ---- " + name + " ---- */\n" + text + "\n";
     }
     return out;
@@ -142,11 +147,12 @@ std::vector<std::string> program_names(const std::string& shader_dir) {
     return names;
 }
 
-AssembledProgram assemble_program(const std::string& shader_dir, const std::string& program,
-                                  const std::vector<std::pair<std::string, std::string>>& defines) {
-    const json all = read_programs(shader_dir);
-    if (!all.contains(program)) throw std::runtime_error("programs.json has no program '" + program + "'");
-    const json& d = all.at(program);
+namespace {
+
+// A program from its description `d` (a programs.json entry); files are read from `first_dir`
+// when they are there, else from `shader_dir`.
+AssembledProgram assemble(const std::string& shader_dir, const std::string& first_dir, const std::string& program,
+                          const json& d, const std::vector<std::pair<std::string, std::string>>& defines) {
     AssembledProgram p;
     p.name = program;
     try {
@@ -169,7 +175,7 @@ AssembledProgram assemble_program(const std::string& shader_dir, const std::stri
             v << "layout(location = " << i << ") in " << glsl_type(p.iface.vertex_in[i].type, program) << " "
               << p.iface.vertex_in[i].name << ";\n";
         }
-        v << interface_block(d.at("vertex_out"), "out", program) << join_files(shader_dir, d.at("vertex"));
+        v << interface_block(d.at("vertex_out"), "out", program) << join_files(shader_dir, d.at("vertex"), first_dir);
         p.vertex = v.str();
 
         std::ostringstream f;
@@ -178,12 +184,59 @@ AssembledProgram assemble_program(const std::string& shader_dir, const std::stri
             f << "layout(location = " << i << ") out " << glsl_type(p.iface.fragment_out[i].type, program) << " "
               << p.iface.fragment_out[i].name << ";\n";
         }
-        f << join_files(shader_dir, d.at("fragment"));
+        f << join_files(shader_dir, d.at("fragment"), first_dir);
         p.fragment = f.str();
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error("programs.json, program '" + program + "': " + e.what());
     }
     return p;
+}
+
+json read_json(const std::string& path) {
+    try {
+        return json::parse(read_text(path));
+    } catch (const json::exception& e) {
+        throw std::runtime_error(path + ": " + e.what());
+    }
+}
+
+}  // namespace
+
+AssembledProgram assemble_program(const std::string& shader_dir, const std::string& program,
+                                  const std::vector<std::pair<std::string, std::string>>& defines) {
+    const json all = read_programs(shader_dir);
+    if (!all.contains(program)) throw std::runtime_error("programs.json has no program '" + program + "'");
+    return assemble(shader_dir, "", program, all.at(program), defines);
+}
+
+// As bench/edge_methods.py's variant(): the flat outputs added, each named file of a stage
+// replaced by its list; a file the program does not have is an error (the variant would
+// silently be the add-on's program).
+AssembledProgram assemble_variant(const std::string& shader_dir, const std::string& variant_file,
+                                  const std::vector<std::pair<std::string, std::string>>& defines) {
+    const json v = read_json(variant_file);
+    const std::string variant_dir = variant_file.substr(0, variant_file.find_last_of('/'));
+    const std::string program = v.at("program").get<std::string>();
+    const json all = read_programs(shader_dir);
+    if (!all.contains(program)) throw std::runtime_error(variant_file + ": programs.json has no program '" + program + "'");
+    json d = all.at(program);
+    for (const auto& member : list_of(v, "vertex_out_flat")) d["vertex_out"]["flat"].push_back(member);
+    for (const char* stage : {"vertex", "fragment"}) {
+        const auto swaps = v.find(stage);
+        if (swaps == v.end()) continue;
+        for (const auto& [name, files] : swaps->items()) {
+            bool found = false;
+            for (const auto& f : d.at(stage)) found = found || f.get<std::string>() == name;
+            if (!found) throw std::runtime_error(variant_file + ": the " + stage + " stage of '" + program + "' has no " + name);
+        }
+        json replaced = json::array();
+        for (const auto& f : d.at(stage)) {
+            const auto swap = swaps->find(f.get<std::string>());
+            for (const auto& g : swap == swaps->end() ? json::array({f}) : *swap) replaced.push_back(g);
+        }
+        d[stage] = replaced;
+    }
+    return assemble(shader_dir, variant_dir, program, d, defines);
 }
 
 }  // namespace el_tools

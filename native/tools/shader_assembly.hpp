@@ -38,11 +38,18 @@ struct AssembledProgram {
 inline constexpr const char* kGlslVersion = "#version 430 core";
 
 // Reads `shader_dir`/programs.json and the program's files. `defines` become #define lines after
-// the version, as GPUShaderCreateInfo.define() does in the add-on (EL_TABLE_LAYOUT,
-// EL_EDGE_METHOD: shaders/highlight_arc.glsl, edge_band.glsl), and a define named in the
-// program's fragment_out_if adds its outputs. Throws std::runtime_error naming the program, file
-// or type that is missing or unknown.
+// the version, as GPUShaderCreateInfo.define() does in the add-on (EL_TABLE_LAYOUT:
+// shaders/highlight_arc.glsl), and a define named in the program's fragment_out_if adds its
+// outputs. Throws std::runtime_error naming the program, file or type that is missing or unknown.
 AssembledProgram assemble_program(const std::string& shader_dir, const std::string& program,
+                                  const std::vector<std::pair<std::string, std::string>>& defines = {});
+
+// A variant of a program kept outside shaders/ for tests and benchmarks, described by
+// `variant_file` (bench/shaders/edge_methods.json: the edge pass's earlier methods and its floor):
+// the program it names, with the flat outputs it adds and, per stage, each file it names replaced
+// by its list (looked up beside `variant_file` first, then in `shader_dir`); as
+// bench/edge_methods.py builds it in Blender.
+AssembledProgram assemble_variant(const std::string& shader_dir, const std::string& variant_file,
                                   const std::vector<std::pair<std::string, std::string>>& defines = {});
 
 // Every program name in programs.json (keys not starting with '_').

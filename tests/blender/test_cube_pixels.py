@@ -1,4 +1,4 @@
-"""Pixels of the cube sample (seed 000, figure 3): the glinting edge, everything else exact."""
+"""Pixels of the cube sample (the paper's figure 3): the glinting edge, everything else exact."""
 import unittest
 
 import bpy

@@ -1,4 +1,4 @@
-"""Large settings degrade gracefully (issue 17, point 7): Highlight Strength cannot pass 1 (older
+"""Large settings degrade gracefully: Highlight Strength cannot pass 1 (older
 files move the excess into the radius), and the material panel says when the radius is clamped
 to what an edge's faces allow."""
 import gc

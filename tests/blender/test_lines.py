@@ -200,8 +200,8 @@ class MarksAndMaterials(unittest.TestCase):
 class Joins(unittest.TestCase):
     def test_joins_leave_no_gap_at_a_cube_corner(self):
         """Round caps: around the corner where three creases meet, every pixel is covered at
-        least as much as a disc of the stroke's radius covers it (seed 001's fin gap is a notch
-        on the outside of the join)."""
+        least as much as a disc of the stroke's radius covers it (the gap between unjoined stroke
+        quads is a notch on the outside of the join)."""
         eye = (4.0, -5.5, 3.5)
         for width in (1.0, 4.0, 12.0):
             scene = helpers.empty_scene(480, 480)

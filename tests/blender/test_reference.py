@@ -1,12 +1,16 @@
 """The edge highlight shader against the native double-precision reference integral."""
 import math
 import os
+import sys
 import unittest
 
 import bpy
 import numpy as np
 
 import helpers
+
+sys.path.insert(0, os.path.join(helpers.ROOT, "bench"))
+import edge_methods  # noqa: E402
 
 A, B = np.array((-1.0, -1.0, 1.0)), np.array((1.0, -1.0, 1.0))  # cube sample's glinting edge
 N1, N2 = (0.0, 0.0, 1.0), (0.0, -1.0, 0.0)                      # top face, front face
@@ -19,11 +23,8 @@ def render_whole_arc(resolution):
     """These tests check the arc integral itself, which the whole-arc method applies to every
     pixel of a band; bands wider than a pixel otherwise shade each pixel with its own part of
     the arc (test_wide_edges.py checks that)."""
-    os.environ["EDGELIGHT_EDGE_METHOD"] = "whole"
-    try:
+    with edge_methods.method("whole"):  # the benchmarks' variant (bench/edge_methods.py)
         return helpers.render(resolution=resolution)
-    finally:
-        del os.environ["EDGELIGHT_EDGE_METHOD"]
 
 
 def blinn_norm(n):

@@ -66,6 +66,24 @@ def compositor(scene):
     return tree, tree.nodes.new("CompositorNodeComposite").inputs[0]
 
 
+def composited(scene, color_mode, resolution=None):
+    """Renders once for the engine's record and once through the compositor into a 32-bit EXR:
+    (record, the EXR's pixels (h, w, 4))."""
+    scene.render.use_compositing = True
+    s = scene.render.image_settings
+    s.file_format, s.color_depth, s.color_mode = 'OPEN_EXR', '32', color_mode
+    with tempfile.TemporaryDirectory() as tmp:
+        scene.render.filepath = os.path.join(tmp, "composited.exr")
+        rec = helpers.render(resolution=resolution)
+        bpy.ops.render.render(write_still=True)
+        img = bpy.data.images.load(scene.render.filepath)
+        w, h = img.size
+        px = np.empty(w * h * 4, np.float32)
+        img.pixels.foreach_get(px)
+        bpy.data.images.remove(img)
+    return rec, px.reshape(h, w, 4)
+
+
 class Registered(unittest.TestCase):
     def test_render_layers_node_offers_the_enabled_passes(self):
         scene = lines_scene()
@@ -119,20 +137,10 @@ class Recompose(unittest.TestCase):
         image = alpha_over(tree, o["Surface"], o["Highlights"])
         image = alpha_over(tree, image, o["Lines"])
         tree.links.new(alpha_over(tree, world.outputs[0], image), out)
-        scene.render.use_compositing = True
-        s = scene.render.image_settings
-        s.file_format, s.color_depth, s.color_mode = 'OPEN_EXR', '32', 'RGBA'
-        with tempfile.TemporaryDirectory() as tmp:
-            scene.render.filepath = os.path.join(tmp, "recomposed.exr")
-            rec = helpers.render(resolution=(320, 240))
-            bpy.ops.render.render(write_still=True)
-            img = bpy.data.images.load(scene.render.filepath)
-            w, h = img.size
-            px = np.empty(w * h * 4, np.float32)
-            img.pixels.foreach_get(px)
-            bpy.data.images.remove(img)
+        rec, px = composited(scene, 'RGBA', resolution=(320, 240))
+        h, w = px.shape[:2]
         self.assertEqual((h, w), (240, 320))
-        error = np.abs(px.reshape(h, w, 4) - rec["pixels"]).max()
+        error = np.abs(px - rec["pixels"]).max()
         self.assertLess(error, 1.0 / 255.0)
         self.assertGreater((rec["passes"]["Lines"][..., 3] > 0.5).sum(), 200)
 
@@ -177,3 +185,76 @@ class DepthAndNormal(unittest.TestCase):
 
     def test_depth_orthographic(self):
         self.check(True)
+
+
+class ObjectIndex(unittest.TestCase):
+    """Blender's Object Index pass (IndexOB; "Object Index" from 5.0): each pixel's object
+    pass_index, 0 where nothing was drawn, from the first sample's id image (docs/addon.md)."""
+
+    def scene(self, highlights=False):
+        scene = helpers.empty_scene(240, 160, highlights=highlights)
+        zoo.top_camera(6.0)
+        helpers.add_sun()
+        a = zoo.box("A", 1.5, location=(-3.5, 0.0, 0.0))
+        a.pass_index = 3
+        b = bpy.data.objects.new("B", a.data)  # a linked duplicate: one extraction, its own index
+        b.location, b.pass_index = (0.0, 0.0, 0.0), 7
+        scene.collection.objects.link(b)
+        part = bpy.data.collections.new("Part")  # instanced only: not in the scene itself
+        zoo.box("Block", 1.5, collection=part).pass_index = 5
+        empty = bpy.data.objects.new("Instancer", None)
+        empty.instance_type, empty.instance_collection = 'COLLECTION', part
+        empty.location, empty.pass_index = (3.5, 0.0, 0.0), 9  # the instanced object's index counts
+        scene.collection.objects.link(empty)
+        scene.view_layers[0].use_pass_object_index = True
+        # Where each object's top face is, and two places where nothing is.
+        self.points = {3.0: (-3.5, 0.2, 0.75), 7.0: (0.3, -0.2, 0.75), 5.0: (3.5, 0.0, 0.75),
+                       0.0: (-1.75, 0.0, 0.0)}
+        return scene
+
+    def name(self):
+        return helpers.addon().render_passes.OBJECT_INDEX
+
+    def check_values(self, rec, index):
+        self.assertEqual(index.shape, (160, 240, 1))
+        for want, point in self.points.items():
+            x, y = np.floor(helpers.project(rec, [point])[0]).astype(int)
+            self.assertEqual(index[y, x, 0], want, f"at {point}")
+        self.assertEqual(index[0, 0, 0], 0.0, "background")
+        self.assertEqual(set(np.unique(index)), {0.0, 3.0, 5.0, 7.0})
+        # Every drawn pixel holds one object's index; nothing drawn holds 0.
+        drawn = zoo.coverage(rec) > 0.0
+        self.assertTrue((index[~drawn] == 0.0).all())
+        self.assertTrue((index[drawn] > 0.0).all())
+
+    def test_render_layers_node_offers_it(self):
+        scene = self.scene()
+        tree, _ = compositor(scene)
+        node = tree.nodes.new("CompositorNodeRLayers")
+        self.assertIn(self.name(), {o.name for o in node.outputs if o.enabled})
+        # Blender's own name for it: the one Cycles registers (5.0 renamed IndexOB).
+        scene.render.engine = 'CYCLES'
+        scene.view_layers[0].update_render_passes()
+        self.assertIn(self.name(), {o.name for o in node.outputs if o.enabled}, "Cycles' name")
+        scene.render.engine = 'EDGELIGHT'
+        scene.view_layers[0].use_pass_object_index = False  # 4.2+ remove the socket, 3.4 disables it
+        self.assertNotIn(self.name(), {o.name for o in node.outputs if o.enabled})
+
+    def test_each_pixel_holds_its_objects_pass_index(self):
+        """Highlights and lines off: the surface pass writes ids for this pass alone."""
+        helpers.needs_gpu()
+        self.scene()
+        rec = helpers.render()
+        self.assertEqual(set(rec["passes"]), {self.name()})
+        self.check_values(rec, rec["passes"][self.name()])
+
+    def test_blenders_compositor_reads_it(self):
+        """The pass through the compositor's Render Layers node, written to a 32-bit EXR."""
+        helpers.needs_gpu()
+        scene = self.scene(highlights=True)
+        tree, out = compositor(scene)
+        tree.links.new(tree.nodes.new("CompositorNodeRLayers").outputs[self.name()], out)
+        rec, px = composited(scene, 'RGB')
+        np.testing.assert_array_equal(px[..., 0], px[..., 1])
+        self.check_values(rec, px[..., :1])
+        np.testing.assert_array_equal(px[..., :1], rec["passes"][self.name()])

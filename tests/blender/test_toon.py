@@ -1,4 +1,4 @@
-"""Toon shading in final renders: the shade ramp (seed 003) and X-Toon (seed 004)."""
+"""Toon shading in final renders: the shade ramp and X-Toon."""
 import unittest
 
 import bpy

@@ -1,4 +1,4 @@
-"""Rounded edges wider than a pixel (issue 6): each pixel shades the part of the arc it sees.
+"""Rounded edges wider than a pixel: each pixel shades the part of the arc it sees.
 
 Checked against real rounded geometry (the cube with Bevel-modifier fillets, bench/fillets.py)
 and, pixel by pixel, against a double-precision quadrature of the arc written here from the
@@ -14,6 +14,7 @@ import numpy as np
 import helpers
 
 sys.path.insert(0, os.path.join(helpers.ROOT, "bench"))
+import edge_methods  # noqa: E402
 import fillets  # noqa: E402
 
 A, B = np.array((-1.0, -1.0, 1.0)), np.array((1.0, -1.0, 1.0))  # cube sample's glinting edge
@@ -38,16 +39,12 @@ def display(rgb):
 
 
 def with_method(method, fn):
-    """Runs fn with the edge pass's method (passes/frame.py: EDGELIGHT_EDGE_METHOD)."""
-    old = os.environ.get("EDGELIGHT_EDGE_METHOD")
-    os.environ["EDGELIGHT_EDGE_METHOD"] = method
-    try:
+    """Runs fn with the edge pass's method: "partial" is the add-on's own, the others are the
+    benchmarks' variants (bench/edge_methods.py)."""
+    if method == "partial":
         return fn()
-    finally:
-        if old is None:
-            del os.environ["EDGELIGHT_EDGE_METHOD"]
-        else:
-            os.environ["EDGELIGHT_EDGE_METHOD"] = old
+    with edge_methods.method(method):
+        return fn()
 
 
 def radius_for(width_px):

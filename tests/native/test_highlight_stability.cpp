@@ -1,4 +1,4 @@
-// Numerical stability sweeps (issue 6), deterministic, one family of hard configurations per test:
+// Numerical stability sweeps, deterministic, one family of hard configurations per test:
 // N1 ~ N2 down to 1e-7 rad, N1 ~ -N2, the view along the edge, grazing views, shininess 1..1e4,
 // scene scales 1e-4..1e5. The float32 path (el_highlight_eval, default table: what the shader
 // computes) against the double reference (el_highlight_reference) from the same float inputs.

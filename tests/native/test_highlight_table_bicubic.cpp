@@ -16,7 +16,7 @@
 namespace {
 
 constexpr double kHalfPi = 0.5 * std::numbers::pi;
-// The paper's stated bound for its 1024 x 128 table (seed 000), and its relative error measured
+// The paper's stated bound for its 1024 x 128 table, and its relative error measured
 // the same way (test_highlight_table_paper.cpp: 2.03e-6 absolute, 1.84e-5 of F(pi/2, 128)).
 constexpr double kPaperAbs = 2.03e-6;
 constexpr double kPaperRel = 1.84e-5;

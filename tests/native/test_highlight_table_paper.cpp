@@ -1,4 +1,4 @@
-// Seed 000's table, 1024 x 128: F(phi, m) for integer m at phi uniform on [0, pi/2]. Its stated
+// The paper's table, 1024 x 128: F(phi, m) for integer m at phi uniform on [0, pi/2]. Its stated
 // bound is the linear-interpolation error h^2/8 max|F''| ("about 2.0e-6"); measured per m against
 // the exact F on a grid 16 times denser than the table's (and on the texel centres).
 #include <edgelight/edgelight.h>

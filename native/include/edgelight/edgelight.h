@@ -210,6 +210,35 @@ EL_API el_status el_mesh_chain_edges(const el_mesh* mesh, const uint32_t* edges,
                                      el_chain_link* out_links, el_chain* out_chains,
                                      uint32_t capacity_chains, uint32_t* out_chain_count);
 
+/* Line nodes: chains of line segments as the add-on's line pass draws them at the screen's
+ * resolution (docs/lines.md). The segments are put in chain order (by chain, then arc length,
+ * from `links` as el_mesh_chain_edges or el_view_chain_contours wrote them; `links` NULL: each
+ * segment a chain of its own) and each run of segments that continue one another is cut into
+ * groups of up to EL_LINE_GROUP; each group is a binary tree of chords over its segments (halved
+ * recursively, the segments its leaves, at most three levels above them). One record per
+ * segment, in chain order, EL_LINE_NODE_FLOATS floats:
+ *   [0..3]   a.xyz, taper at a: the segment's first point along the chain and that end's taper
+ *            value (taper: two values per segment, at p0 and p1)
+ *   [4..7]   b.xyz, taper at b: its last point
+ *   [8..10]  the error of its parent chord, grandparent, great-grandparent (-1: none): no point
+ *            of the segments a chord stands for lies farther from it (errors never shrink
+ *            towards the root)
+ *   [11]     sum over those three levels l = 0, 1, 2 of count_l * 16^l: count_l the segments
+ *            of that chord when this segment is its first, else 0
+ *   [12..15] the group's bounding sphere (centre, radius)
+ *   [16..19] the bounding sphere of the segment's whole chain, with EL_LINE_NODES_CHAIN_SPHERES
+ *            (radius -1 without)
+ * A chord of count segments starting at place i runs from a of record i to b of record
+ * i + count - 1. Distances are in the input's units. out_order[i] (count values) is the input
+ * segment at place i; out_nodes takes count records (capacity_nodes counts records). count must
+ * be below 2^24 (places are exact as floats). */
+#define EL_LINE_GROUP 8u
+#define EL_LINE_NODE_FLOATS 20u
+#define EL_LINE_NODES_CHAIN_SPHERES (1u << 0)
+EL_API el_status el_line_nodes(const float* p0, const float* p1, const float* taper, const el_chain_link* links,
+                               uint32_t count, uint32_t flags, float* out_nodes, uint32_t capacity_nodes,
+                               uint32_t* out_order);
+
 /* ------------------------------------------------------------------------------------------ */
 /* View: silhouettes and smooth contours, cached per view                                       */
 /* ------------------------------------------------------------------------------------------ */
@@ -274,7 +303,7 @@ EL_API el_status el_view_get_stats(const el_view* view, el_view_stats* out_stats
 typedef struct el_highlight_table el_highlight_table;
 
 typedef enum el_table_layout {
-    /* Seed 000's table: F(phi, m) at phi_count values of phi uniform on [0, pi/2] and the
+    /* The paper's table: F(phi, m) at phi_count values of phi uniform on [0, pi/2] and the
      * integers m = 1, 2, ..., m_count. Lookups between integer m interpolate linearly. */
     EL_TABLE_PAPER = 0,
     /* EdgeLight's: x = phi / phi_end(m) uniform on [0, 1] with phi_end(m) = min(pi/2, c/sqrt(m)),

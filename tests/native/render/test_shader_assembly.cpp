@@ -21,14 +21,39 @@ TEST_F(ShaderAssembly, EveryProgramCompilesAndLinks) {
 
 TEST_F(ShaderAssembly, InterfaceFollowsProgramsJson) {
     const auto p = el_tools::assemble_program(EDGELIGHT_SHADER_DIR, "edge_highlight");
-    // Flat outputs stay flat (the short-edge colour comes from one vertex), slots in list order.
-    EXPECT_NE(p.vertex.find("flat vec4 edge_color;"), std::string::npos);
+    // Flat outputs stay flat (each quad carries its edge's), slots in list order.
+    EXPECT_NE(p.vertex.find("flat vec4 edge_cut0;"), std::string::npos);
     EXPECT_NE(p.fragment.find("smooth vec3 edge_point;"), std::string::npos);
     EXPECT_NE(p.vertex.find("layout(location = 4) in vec4 corner;"), std::string::npos);
     EXPECT_NE(p.fragment.find("layout(binding = 1) uniform sampler2D surface_depth;"), std::string::npos);
     EXPECT_NE(p.fragment.find("layout(std140, binding = 0) uniform FrameData_frame_block { FrameData frame; };"),
               std::string::npos);
     EXPECT_THROW(el_tools::assemble_program(EDGELIGHT_SHADER_DIR, "no_such_program"), std::runtime_error);
+}
+
+// The edge pass's benchmark and test variants (bench/shaders/edge_methods.json) build on the
+// add-on's program: every method, with and without fitted quads and the floor, compiles and links,
+// with the flat outputs the variant adds; the add-on's program has none of them.
+TEST_F(ShaderAssembly, BenchVariantsCompileAndLink) {
+    const std::string variants = EDGELIGHT_BENCH_SHADER_DIR "/edge_methods.json";
+    for (const char* method : {"0", "1", "2", "3"}) {
+        for (const char* tight : {"true", "false"}) {
+            for (bool floor : {false, true}) {
+                std::vector<std::pair<std::string, std::string>> defines = {
+                    {"EL_EDGE_METHOD", method}, {"EL_TIGHT_QUADS", tight}};
+                if (floor) defines.emplace_back("EL_EDGE_FLOOR", "1");
+                el_tools::AssembledProgram p;
+                ASSERT_NO_THROW(p = el_tools::assemble_variant(EDGELIGHT_SHADER_DIR, variants, defines));
+                EXPECT_NO_THROW({ el_tools::Program compiled(p); }) << method << " " << tight << " " << floor;
+                EXPECT_NE(p.vertex.find("flat vec4 edge_color;"), std::string::npos);
+            }
+        }
+    }
+    const auto product = el_tools::assemble_program(EDGELIGHT_SHADER_DIR, "edge_highlight");
+    for (const char* variant_only : {"edge_color", "EL_EDGE_METHOD", "EL_TIGHT_QUADS", "EL_EDGE_FLOOR", "quadrature"}) {
+        EXPECT_EQ(product.vertex.find(variant_only), std::string::npos) << variant_only;
+        EXPECT_EQ(product.fragment.find(variant_only), std::string::npos) << variant_only;
+    }
 }
 
 }  // namespace

@@ -1,0 +1,79 @@
+"""Which edges each material rounds (the material's Rounded Edges settings, materials.Shading),
+from one mesh's edge data (edge_data.EdgeData): the rule, in one function. No bpy: plain-Python
+tests import it.
+"""
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import band_ends, native, radius_clamp
+from .lines import surface_ids
+from .radius_clamp_notes import record_radius_clamps
+
+
+@dataclass
+class EdgeSet:
+    """Chosen edges of one material slot, object space."""
+    p0: np.ndarray
+    p1: np.ndarray
+    n1: np.ndarray
+    n2: np.ndarray
+    radius: np.ndarray
+    faces: np.ndarray = None           # (N, 2) float32 surface ids of its two faces (band visibility)
+    ends: np.ndarray = None            # (N, 4) float32 where its band ends on each face (band_ends.py)
+
+    def __len__(self):
+        return len(self.radius)
+
+
+def same_edges(a, b):
+    """Whether two choose_edges results draw the same edges (slots, counts, radii, positions)."""
+    if a.keys() != b.keys():
+        return False
+    return all(len(a[k]) == len(b[k]) and np.array_equal(a[k].radius, b[k].radius) and np.array_equal(a[k].p0, b[k].p0)
+               for k in a)
+
+
+def choose_edges(d, shading):
+    """Edges each material rounds. An edge between two materials is rounded when both enable
+    rounding and either one's rule picks it; it takes the smaller radius and the shading of the
+    material of its first face."""
+    flags, angles, normals, edges, positions = d.flags, d.angles, d.normals, d.edges, d.positions
+    face_a, face_b, tri_slot, sharp, bevel = d.face_a, d.face_b, d.tri_slot, d.sharp, d.bevel
+    ok = ((flags & native.EDGE_MANIFOLD) != 0) & ((flags & native.EDGE_DEGENERATE) == 0) & (face_b >= 0)
+    slot_a = np.where(face_a >= 0, tri_slot[np.maximum(face_a, 0)], 0)
+    slot_b = np.where(face_b >= 0, tri_slot[np.maximum(face_b, 0)], 0)
+
+    def picked(slot):
+        enabled = np.array([s.enabled and s.radius > 0.0 and s.K > 0.0 for s in shading])[slot]
+        by_angle = np.array(['ANGLE' in s.rules for s in shading])[slot] & (angles > np.array([s.angle_deg for s in shading])[slot])
+        by_sharp = np.array(['SHARP' in s.rules for s in shading])[slot] & sharp
+        by_bevel = np.array(['BEVEL' in s.rules for s in shading])[slot] & (bevel > 0.0)
+        radius = np.array([s.radius for s in shading], np.float32)[slot]
+        # Picked by bevel weight alone: the weight scales the radius (like the Bevel modifier).
+        radius = np.where(by_bevel & ~(by_angle | by_sharp), radius * bevel, radius)
+        return enabled, by_angle | by_sharp | by_bevel, radius
+
+    en_a, pick_a, rad_a = picked(slot_a)
+    en_b, pick_b, rad_b = picked(slot_b)
+    chosen = ok & en_a & en_b & (pick_a | pick_b)
+    radius = np.minimum(np.where(pick_a, rad_a, np.inf), np.where(pick_b, rad_b, np.inf)).astype(np.float32)
+    # No larger than the faces allow (Clamp Overlap): past that a band is no fillet's image.
+    picked_edges = np.flatnonzero(chosen)
+    if d.polygons is not None and len(picked_edges):
+        limit = radius_clamp.max_radius(d.widths_of(picked_edges), angles[picked_edges])
+        radius[picked_edges] = np.minimum(radius[picked_edges], limit).astype(np.float32)
+    else:
+        limit = np.full(len(picked_edges), np.inf)
+    # For the material panel's note (radius_clamp_notes): nothing is written to the materials.
+    e = picked_edges
+    record_radius_clamps(d, shading, ((slot_a[e], pick_a[e], rad_a[e]), (slot_b[e], pick_b[e], rad_b[e])), limit)
+    out = {}
+    for slot in np.unique(slot_a[chosen]):
+        sel = np.flatnonzero(chosen & (slot_a == slot))
+        faces = np.stack([face_a[sel], face_b[sel]], axis=1)
+        out[int(slot)] = EdgeSet(positions[edges[sel, 0]], positions[edges[sel, 1]],
+                                 np.ascontiguousarray(normals[sel, :3]), np.ascontiguousarray(normals[sel, 3:]),
+                                 radius[sel], surface_ids(d, faces),
+                                 band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen))
+    return out

@@ -1,0 +1,11 @@
+"""Defaults of a material's EdgeLight settings, in one place: the settings' defaults
+(properties.py) and the look of a slot without a material (materials.shading_of(None)) are
+read from here. No bpy: plain-Python tests import it."""
+
+ROUNDED = True                                # use_rounding: the material rounds its chosen edges
+HIGHLIGHT_STRENGTH = 1.0                      # K
+RADIUS = 0.01                                 # object's local units, scaled with the object
+TINT = (1.0, 1.0, 1.0)                        # multiplies the highlight's specular part
+EDGES = frozenset({'ANGLE', 'SHARP', 'BEVEL'})  # selection: which rules choose the rounded edges
+ANGLE_DEG = 30.0                              # angle: faces meeting at more than this are rounded
+SHADING = 'PHONG'                             # shading: a key of shaders/surface_modes.json

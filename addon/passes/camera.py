@@ -1,0 +1,43 @@
+"""The camera a frame is drawn from, and the sub-pixel jitter of its samples (Halton 2, 3)."""
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass
+class Camera:
+    view: np.ndarray          # world -> view, 4x4 row-major
+    projection: np.ndarray    # view -> clip, 4x4 row-major
+    eye: tuple
+    view_dir: tuple           # direction the camera looks along
+    orthographic: bool
+    width: int
+    height: int
+
+    @property
+    def px_per_unit(self):
+        """Pixels per world unit at distance 1 (perspective) or anywhere (orthographic)."""
+        return float(self.projection[0, 0]) * self.width / 2.0
+
+
+def halton(i, base):
+    f, r = 1.0, 0.0
+    while i > 0:
+        f /= base
+        r += f * (i % base)
+        i //= base
+    return r
+
+
+def jitter(sample):
+    """Sub-pixel offset of a sample; sample 0 is the pixel centre, so one sample is exact."""
+    if sample == 0:
+        return 0.0, 0.0
+    return halton(sample, 2) - 0.5, halton(sample, 3) - 0.5
+
+
+def jittered_projection(projection, width, height, dx, dy):
+    t = np.eye(4, dtype=np.float64)
+    t[0, 3] = 2.0 * dx / width
+    t[1, 3] = 2.0 * dy / height
+    return t @ projection

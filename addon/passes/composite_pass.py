@@ -1,0 +1,16 @@
+"""Composite pass: lines over the highlight-blended surface, added to the result with a
+sample's weight."""
+from . import pass_state, shader_lib
+from .targets import composite_outputs
+
+
+def draw_composite(targets, background, full_screen, weight):
+    """Adds weight x the composited sample to the result (cleared by the caller), and the
+    surface alone to surface_sum when the Surface pass is asked for."""
+    shader = shader_lib.get("composite", composite_outputs(targets))
+    with pass_state.drawing("composite", targets.result_fb):
+        shader.bind()
+        pass_state.bind_inputs(shader, "composite", targets)
+        shader_lib.set_uniform(shader, "background", background)
+        shader_lib.set_uniform(shader, "weight", weight)
+        full_screen.draw(shader)

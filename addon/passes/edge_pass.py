@@ -1,0 +1,32 @@
+"""Edge highlight pass: one quad per rounded edge (batches.edge_batches), shaded with EdgeLight's
+method (shaders/edge_highlight.*), premultiplied into the highlight target, once per frame."""
+from . import frame_data, pass_state, shader_lib, table
+from .surface_pass import shading_uniforms
+
+
+def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
+    """Each instance's rounded edges into targets.highlight (the first sample's: the band's
+    coverage is box-filtered across the edge analytically, docs/addon.md); counted in
+    stats.edges_drawn."""
+    tex, info = table.table()
+    # The table layout is fixed in the program (highlight_arc.glsl); the surface pass wrote ids:
+    # visibility by face (docs/lines.md).
+    defines = {**pass_state.table_defines("edge_highlight", info), "EL_EDGE_IDS": 1}
+    shader = shader_lib.get("edge_highlight", defines)
+    with pass_state.drawing("edge_highlight", targets.highlight_fb):
+        shader.bind()
+        shader.uniform_block("frame", ubo)
+        pass_state.bind_table(shader, "edge_highlight", tex, info)
+        pass_state.bind_inputs(shader, "edge_highlight", targets)
+        for index, inst in enumerate(scene.instances):
+            gm = gpu_meshes[id(inst.mesh)]
+            if not gm.edges:
+                continue
+            shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
+            shader_lib.set_uniform(shader, "instance_id", float(index + 1))
+            for slot, batch in gm.edges.items():
+                s = gm.extract.slot_shading[slot]
+                shading_uniforms(shader, s)
+                shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
+                batch.draw(shader)
+                stats.edges_drawn += len(gm.extract.edges[slot])

@@ -1,0 +1,32 @@
+"""The FrameData uniform block of a sample: camera, viewport, world and lights, packed by member
+name in the layout shaders/frame_data.json gives (shader_specs.Block)."""
+import numpy as np
+
+from . import shader_specs
+
+# The block's layout and the light limit, read from the one description the shaders are built from.
+FRAME_DATA = shader_specs.Block("frame_data.json")
+MAX_LIGHTS = FRAME_DATA.defines["EL_MAX_LIGHTS"]
+
+
+def mat4(m):
+    """numpy row-major 4x4 -> std140 column-major floats."""
+    return np.asarray(m, dtype=np.float32).T.reshape(-1)
+
+
+def pack(camera, projection, scene):
+    """The FrameData block's floats (members: shaders/frame_data.json)."""
+    lights = scene.lights[:MAX_LIGHTS]
+    return FRAME_DATA.pack({
+        "view": mat4(camera.view),
+        "projection": mat4(projection),
+        "eye": (*camera.eye, 0.0 if camera.orthographic else 1.0),
+        "view_dir": (*camera.view_dir, 0.0),
+        "viewport": (camera.width, camera.height, 1.0 / camera.width, 1.0 / camera.height),
+        "ambient": (*scene.ambient, 1.0),
+        "camera": (camera.px_per_unit, len(lights), 0.0, 0.0),
+        "light_color": [(*light.color, light.kind) for light in lights],
+        "light_position": [(*light.position, 0.0) for light in lights],
+        "light_direction": [(*light.direction, light.spot_cos) for light in lights],
+        "light_spot": [(light.spot_blend, 0.0, 0.0, 0.0) for light in lights],
+    })

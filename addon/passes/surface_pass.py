@@ -1,0 +1,67 @@
+"""Surface pass: each material slot's triangles, shaded (Blinn-Phong, toon ramp, X-Toon or
+whiteout), into the surface targets; with ids, which instance and face covers each pixel."""
+from . import frame_data, pass_state, shader_lib, shader_specs, toon
+from .targets import surface_outputs
+
+# The surface program's shading modes (shaders/surface_modes.json).
+SURFACE_MODES = shader_specs.enum("surface_modes.json", "EL_SURFACE_MODE")
+
+
+def shading_uniforms(shader, s):
+    """A material slot's colours (materials.Shading), shared by the surface and edge passes."""
+    shader_lib.set_uniform(shader, "base_color", (*s.base_color, s.alpha))
+    shader_lib.set_uniform(shader, "spec_color", (*s.spec_color, s.shininess))
+
+
+def _surface_mode(s, whiteout):
+    """The surface program's shading mode (shaders/surface_modes.json): the material's
+    (toon.mode: materials.py), or WHITEOUT."""
+    return SURFACE_MODES["WHITEOUT"] if whiteout else int(s.toon.mode)
+
+
+def _toon_uniforms(shader, s, mode):
+    """The toon parameters, and the texture of a ramp or X-Toon mode."""
+    t = s.toon
+    shader_lib.set_uniform(shader, "toon", (float(mode), t.near, t.far, (1.0 if t.smooth else 0.0) + (2.0 if t.orientation else 0.0)))
+    if mode == SURFACE_MODES["RAMP"]:
+        shader_lib.set_sampler(shader, "toon_ramp", toon.ramp_texture(t))
+    elif mode == SURFACE_MODES["XTOON"]:
+        shader_lib.set_sampler(shader, "toon_map", toon.map_texture(t, s.base_color))
+
+
+def slot_first_ids(extract):
+    """slot -> the surface id of its batch's first triangle (scene_sync: ids follow slot order)."""
+    out, first = {}, 1
+    for slot, tris in extract.slot_triangles.items():
+        out[slot] = first
+        first += len(tris)
+    return out
+
+
+def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False):
+    """One program per shading mode in use (EL_SURFACE_MODE is fixed when it is built: a uniform
+    branch would make every fragment pay for every mode on llvmpipe). With `ids`, the variant
+    that also writes which instance and face covers each pixel (the line pass's visibility,
+    docs/lines.md)."""
+    draws, firsts = {}, {}
+    for index, inst in enumerate(scene.instances):
+        gm = gpu_meshes[id(inst.mesh)]
+        if ids and id(gm.extract) not in firsts:  # once per geometry, not per instance
+            firsts[id(gm.extract)] = slot_first_ids(gm.extract)
+        first = firsts.get(id(gm.extract), {})
+        for slot, batch in gm.surface.items():
+            s = gm.extract.slot_shading[slot]
+            draws.setdefault(_surface_mode(s, whiteout), []).append(
+                (inst.matrix, s, batch, (float(index + 1), float(first.get(slot, 0)))))
+    outputs = surface_outputs(targets, ids)
+    with pass_state.drawing("surface", targets.surface_ids_fb if ids else targets.surface_fb):
+        for mode, items in sorted(draws.items()):
+            shader = shader_lib.get("surface", {"EL_SURFACE_MODE": mode, **outputs})
+            shader.bind()
+            shader.uniform_block("frame", ubo)
+            for matrix, s, batch, surface_ids in items:
+                shader_lib.set_uniform(shader, "model", frame_data.mat4(matrix))
+                shader_lib.set_uniform(shader, "surface_ids", surface_ids)
+                shading_uniforms(shader, s)
+                _toon_uniforms(shader, s, mode)
+                batch.draw(shader)

@@ -1,0 +1,1 @@
+#endif /* EL_EDGE_FLOOR (edge_floor.frag.glsl) */

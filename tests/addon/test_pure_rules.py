@@ -1,0 +1,205 @@
+"""The add-on's pure rules in plain Python (no Blender), on inputs small enough to know the answer:
+which edges each material rounds (edge_choice.choose_edges), the taper parameter of a line's
+ends (lines.taper_params), the first two faces of each edge (edge_data.first_two_faces), and
+the crease rule, which the add-on asks of the library (lines.crease_edges; needs the built
+library: EDGELIGHT_LIBRARY, which ctest sets).
+
+    EDGELIGHT_LIBRARY=build/native/libedgelight.so python3 tests/addon/test_pure_rules.py
+"""
+import math
+import os
+import unittest
+from dataclasses import dataclass
+
+import numpy as np
+
+from addon_modules import addon_module
+
+native = addon_module("native")
+lines = addon_module("lines")
+edge_data = addon_module("edge_data")
+edge_choice = addon_module("edge_choice")
+material_defaults = addon_module("material_defaults")
+
+NO = native.NO_EDGE
+
+
+class FirstTwoFaces(unittest.TestCase):
+    def test_first_two_triangles_in_triangle_order(self):
+        # Edges: 0 border (triangle 1 only), 1 between triangles 0 and 2, 2 used by three
+        # triangles (0, 1, 3: the first two are kept), 3 unused, 4 only on a polygon diagonal.
+        tri_edges = np.array([[1, 2, NO],
+                              [2, 0, NO],
+                              [NO, 1, NO],
+                              [NO, NO, 2]], np.uint32)
+        first, second = edge_data.first_two_faces(tri_edges, 5)
+        self.assertEqual(first.tolist(), [1, 0, 0, -1, -1])
+        self.assertEqual(second.tolist(), [-1, 2, 1, -1, -1])
+
+    def test_repeated_side_of_one_triangle_counts_once_per_side(self):
+        # A degenerate triangle naming edge 0 twice: its two sides are two uses, in side order.
+        first, second = edge_data.first_two_faces(np.array([[0, 0, 1]], np.uint32), 2)
+        self.assertEqual((first.tolist(), second.tolist()), ([0, 0], [0, -1]))
+
+    def test_no_triangles(self):
+        first, second = edge_data.first_two_faces(np.zeros((0, 3), np.uint32), 3)
+        self.assertEqual((first.tolist(), second.tolist()), ([-1] * 3, [-1] * 3))
+
+
+def chains(*rows):
+    return np.array(list(rows), native.CHAIN)
+
+
+def links(*rows):
+    return np.array(list(rows), native.CHAIN_LINK)
+
+
+class TaperParams(unittest.TestCase):
+    def test_distance_to_the_nearest_free_end_over_the_chain_length(self):
+        free = native.CHAIN_START_FREE | native.CHAIN_END_FREE
+        c = chains((3, 4.0, free), (2, 2.0, native.CHAIN_START_FREE), (2, 2.0, native.CHAIN_END_FREE))
+        got = lines.taper_params(links((0, 0.0, 1.0), (0, 1.0, 3.0), (0, 3.0, 4.0),
+                                       (1, 0.0, 1.0), (2, 1.0, 2.0)), c)
+        np.testing.assert_allclose(got, [[0.0, 0.25], [0.25, 0.25], [0.25, 0.0],
+                                         [0.0, 0.5], [0.5, 0.0]])
+
+    def test_an_end_without_a_free_end_on_its_chain_does_not_taper(self):
+        got = lines.taper_params(links((0, 0.5, 1.5), (1, 0.0, 1.0)),
+                                 chains((4, 2.0, native.CHAIN_CLOSED), (1, 1.0, 0)))
+        self.assertTrue(np.all(got == lines.NO_TAPER))
+
+    def test_no_links(self):
+        self.assertEqual(lines.taper_params(links(), chains()).shape, (0, 2))
+
+
+@dataclass(frozen=True)
+class Shading:
+    """The fields of materials.Shading that the edge choice reads (materials imports bpy)."""
+    enabled: bool = material_defaults.ROUNDED
+    K: float = material_defaults.HIGHLIGHT_STRENGTH
+    radius: float = material_defaults.RADIUS
+    rules: frozenset = material_defaults.EDGES
+    angle_deg: float = material_defaults.ANGLE_DEG
+    material: str = ""
+
+
+MANIFOLD = native.EDGE_MANIFOLD
+
+
+def edges_of(angles, sharp=None, bevel=None, flags=None, slots=(0, 0)):
+    """EdgeData of len(angles) separate edges, edge i between triangles 2i and 2i + 1 (slots:
+    the two triangles' material slots, or one pair per edge)."""
+    n = len(angles)
+    slots = np.array(slots if np.ndim(slots) == 2 else [slots] * n)
+    positions = np.array([(i, j, 0.0) for i in range(n) for j in (0.0, 1.0)], np.float32)
+    return edge_data.EdgeData(
+        flags=np.array(flags if flags is not None else [MANIFOLD] * n, np.uint32),
+        angles=np.array(angles, np.float32),
+        normals=np.tile(np.array([0, 0, 1, 0, 1, 0], np.float32), (n, 1)),
+        edges=np.arange(2 * n, dtype=np.uint32).reshape(n, 2),
+        positions=positions,
+        face_a=np.arange(n, dtype=np.int64) * 2,
+        face_b=np.arange(n, dtype=np.int64) * 2 + 1,
+        tri_slot=slots.reshape(-1),
+        sharp=np.array(sharp if sharp is not None else [False] * n),
+        bevel=np.array(bevel if bevel is not None else [0.0] * n, np.float32),
+        surface_id=np.arange(1, 2 * n + 1, dtype=np.uint32))
+
+
+def chosen(result):
+    """{slot: (edge indices by their p0's x, radii)} of a choose_edges result."""
+    return {slot: (e.p0[:, 0].astype(int).tolist(), e.radius.tolist()) for slot, e in result.items()}
+
+
+class ChooseEdges(unittest.TestCase):
+    def test_angle_rule_rounds_edges_past_the_angle(self):
+        got = edge_choice.choose_edges(edges_of([10.0, 30.0, 31.0, 90.0]), [Shading()])
+        self.assertEqual(chosen(got), {0: ([2, 3], [np.float32(0.01)] * 2)})
+
+    def test_sharp_and_bevel_rules_and_the_bevel_weight_scaling_the_radius(self):
+        d = edges_of([5.0, 5.0, 5.0, 60.0], sharp=[True, False, False, False], bevel=[0.0, 0.5, 0.0, 0.5])
+        got = chosen(edge_choice.choose_edges(d, [Shading(radius=0.02)]))
+        # Edge 1 is picked by its bevel weight alone (radius x weight); edge 3 by its angle too
+        # (the full radius); edge 2 by nothing.
+        self.assertEqual(got[0][0], [0, 1, 3])
+        np.testing.assert_allclose(got[0][1], [0.02, 0.01, 0.02])
+        none = chosen(edge_choice.choose_edges(d, [Shading(rules=frozenset({'SHARP'}))]))
+        self.assertEqual(none[0][0], [0])
+
+    def test_only_usable_manifold_edges_with_two_faces(self):
+        flags = [MANIFOLD, MANIFOLD | native.EDGE_DEGENERATE, native.EDGE_NON_MANIFOLD, native.EDGE_BORDER]
+        d = edges_of([60.0] * 4, flags=flags)
+        d.face_b[3] = -1  # the border edge's one face
+        self.assertEqual(chosen(edge_choice.choose_edges(d, [Shading()]))[0][0], [0])
+
+    def test_between_two_materials(self):
+        # Edge 0: both round, only the second's angle picks it, smaller radius wins; edge 1: the
+        # second material does not round at all; edge 2: K = 0 turns rounding off; edge 3: both
+        # pick it, and its first face's material (slot 1) shades it.
+        d = edges_of([40.0, 60.0, 60.0, 60.0], slots=[(0, 1), (0, 2), (0, 3), (1, 0)])
+        shading = [Shading(radius=0.03, angle_deg=50.0), Shading(radius=0.02),
+                   Shading(enabled=False), Shading(K=0.0)]
+        self.assertEqual(chosen(edge_choice.choose_edges(d, shading)),
+                         {0: ([0], [np.float32(0.02)]), 1: ([3], [np.float32(0.02)])})
+
+    def test_bands_carry_their_faces_surface_ids(self):
+        got = edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading()])
+        self.assertEqual(got[0].faces.tolist(), [[1.0, 2.0], [3.0, 4.0]])
+
+    def test_same_edges(self):
+        a = edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading()])
+        self.assertTrue(edge_choice.same_edges(a, edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading()])))
+        self.assertFalse(edge_choice.same_edges(a, edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading(radius=0.02)])))
+        self.assertFalse(edge_choice.same_edges(a, edge_choice.choose_edges(edges_of([60.0, 10.0]), [Shading()])))
+
+
+def library():
+    if not os.environ.get("EDGELIGHT_LIBRARY"):
+        raise unittest.SkipTest("EDGELIGHT_LIBRARY not set (ctest sets it)")
+    return native.load()
+
+
+def moebius(segments=7):
+    """A Moebius strip of `segments` quads: orientable nowhere, so one edge joins faces wound
+    against each other whatever the library chooses."""
+    verts = []
+    for i in range(segments):
+        t = 2.0 * math.pi * i / segments
+        for s in (-0.3, 0.3):
+            r = 1.0 + s * math.cos(t / 2.0)
+            verts.append((r * math.cos(t), r * math.sin(t), s * math.sin(t / 2.0)))
+    tris = []
+    for i in range(segments):
+        a, b = 2 * i, 2 * i + 1
+        c, d = (2 * (i + 1), 2 * (i + 1) + 1) if i + 1 < segments else (1, 0)  # the half twist
+        tris += [(a, c, b), (b, c, d)]
+    return np.array(verts, np.float32), np.array(tris, np.uint32)
+
+
+class CreaseRule(unittest.TestCase):
+    def test_crease_edges_follow_the_threshold(self):
+        # Two triangles folded 60 degrees about their shared edge, and a flat square.
+        c, s = math.cos(math.radians(60.0)), math.sin(math.radians(60.0))
+        positions = np.array([(0, 0, 0), (1, 0, 0), (0.5, 1, 0), (0.5, -c, s),
+                              (3, 0, 0), (4, 0, 0), (4, 1, 0), (3, 1, 0)], np.float32)
+        mesh = native.Mesh(positions, np.array([(0, 1, 2), (1, 0, 3), (4, 5, 6), (4, 6, 7)], np.uint32), lib=library())
+        e = mesh.edges()
+        fold = [i for i, (a, b) in enumerate(e) if {int(a), int(b)} == {0, 1}]
+        for threshold, expect in ((59.0, fold), (61.0, [])):
+            self.assertEqual(np.flatnonzero(lines.crease_edges(mesh, threshold)).tolist(), expect, threshold)
+
+    def test_no_crease_between_faces_wound_against_each_other(self):
+        mesh = native.Mesh(*moebius(), lib=library())
+        flags, angles = mesh.edge_flags(), mesh.edge_angles()
+        flipped = (flags & native.EDGE_FLIPPED_WINDING) != 0
+        manifold = (flags & native.EDGE_MANIFOLD) != 0
+        self.assertGreater(int(flipped.sum()), 0)
+        threshold = 1.0
+        self.assertTrue(np.any(flipped & manifold & (angles > threshold)), "a flipped edge past the angle")
+        crease = lines.crease_edges(mesh, threshold)
+        self.assertFalse(np.any(crease & flipped))
+        self.assertTrue(np.array_equal(crease, manifold & ~flipped & (angles > threshold)))
+
+
+if __name__ == "__main__":
+    unittest.main()
