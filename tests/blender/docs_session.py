@@ -17,7 +17,6 @@ import json
 import math
 import os
 import sys
-import traceback
 
 import bmesh
 import bpy
@@ -25,20 +24,19 @@ import numpy as np
 from bpy_extras.view3d_utils import location_3d_to_region_2d
 from mathutils import Vector
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ui_session  # noqa: E402
+from ui_session import check  # noqa: E402
+
 ARGS = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 OUT = ARGS[0] if ARGS else "/tmp/edgelight_docs"
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SAMPLES = os.path.join(ROOT, "blend_samples")
 os.makedirs(os.path.join(OUT, "passes"), exist_ok=True)
-results, shots = [], {}
+shots = {}
 if os.path.exists(os.path.join(OUT, "shots.json")):  # a run of some groups only keeps the others'
     with open(os.path.join(OUT, "shots.json")) as f:
         shots.update(json.load(f))
-
-
-def check(name, ok, detail=""):
-    results.append((name, bool(ok), detail))
-    print(f"{'PASS' if ok else 'FAIL'} {name} {detail}", flush=True)
 
 
 def addon():
@@ -541,26 +539,7 @@ def steps():
 
 def run():
     addon().engine.capture = True  # the viewport's counters and the render's passes are read here
-    gen = steps()
-
-    def tick():
-        try:
-            return next(gen)
-        except StopIteration:
-            finish()
-        except Exception:
-            traceback.print_exc()
-            check("session ran to the end", False)
-            finish()
-        return None
-
-    bpy.app.timers.register(tick, first_interval=1.0)
-
-
-def finish():
-    failed = sum(1 for _, ok, _ in results if not ok)
-    print(f"docs session: {len(results) - failed} passed, {failed} failed", flush=True)
-    os._exit(1 if failed or not results else 0)
+    ui_session.run(steps, "docs session")
 
 
 run()

@@ -9,21 +9,18 @@ per check and 'viewport: N passed, N failed'; exits 1 on any failure.
 import json
 import os
 import sys
-import traceback
 
 import bpy
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ui_session  # noqa: E402
+from ui_session import check  # noqa: E402
 
 ARGS = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 OUT = ARGS[0] if ARGS else "/tmp/edgelight_viewport"
 os.makedirs(OUT, exist_ok=True)
 A, B = np.array((-1.0, -1.0, 1.0)), np.array((1.0, -1.0, 1.0))  # the cube's glinting edge
-results = []
-
-
-def check(name, ok, detail=""):
-    results.append((name, bool(ok), detail))
-    print(f"{'PASS' if ok else 'FAIL'} {name} {detail}", flush=True)
 
 
 def view3d():
@@ -404,26 +401,7 @@ def steps():
 def run():
     import edgelight
     edgelight.engine.capture = True  # keep the viewport state and renders for the counts read here
-    gen = steps()
-
-    def tick():
-        try:
-            return next(gen)
-        except StopIteration:
-            finish()
-        except Exception:
-            traceback.print_exc()
-            check("session ran to the end", False)
-            finish()
-        return None
-
-    bpy.app.timers.register(tick, first_interval=1.0)
-
-
-def finish():
-    failed = sum(1 for _, ok, _ in results if not ok)
-    print(f"viewport: {len(results) - failed} passed, {failed} failed", flush=True)
-    os._exit(1 if failed or not results else 0)
+    ui_session.run(steps, "viewport")
 
 
 run()
