@@ -202,9 +202,11 @@ for (_name, _label, _on, _doc), _style in zip(LINE_TYPES, LINE_STYLES):
 CLASSES = (EdgeLightMaterialSettings, *LINE_STYLES, EdgeLightSceneSettings)
 
 
+_register_classes, _unregister_classes = bpy.utils.register_classes_factory(CLASSES)
+
+
 def register():
-    for cls in CLASSES:
-        bpy.utils.register_class(cls)
+    _register_classes()
     bpy.types.Material.edgelight = bpy.props.PointerProperty(type=EdgeLightMaterialSettings)
     bpy.types.Scene.edgelight = bpy.props.PointerProperty(type=EdgeLightSceneSettings)
 
@@ -212,5 +214,4 @@ def register():
 def unregister():
     del bpy.types.Scene.edgelight
     del bpy.types.Material.edgelight
-    for cls in reversed(CLASSES):
-        bpy.utils.unregister_class(cls)
+    _unregister_classes()

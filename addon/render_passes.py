@@ -136,13 +136,14 @@ class VIEWLAYER_PT_edgelight_passes(EdgeLightPanel, bpy.types.Panel):
 _classes = (EdgeLightViewLayerSettings, VIEWLAYER_PT_edgelight_passes)
 
 
+_register_classes, _unregister_classes = bpy.utils.register_classes_factory(_classes)
+
+
 def register():
-    for cls in _classes:
-        bpy.utils.register_class(cls)
+    _register_classes()
     bpy.types.ViewLayer.edgelight = bpy.props.PointerProperty(type=EdgeLightViewLayerSettings)
 
 
 def unregister():
     del bpy.types.ViewLayer.edgelight
-    for cls in reversed(_classes):
-        bpy.utils.unregister_class(cls)
+    _unregister_classes()

@@ -144,13 +144,14 @@ class EDGELIGHT_PT_lines_svg(EdgeLightPanel, bpy.types.Panel):
 CLASSES = (EdgeLightSvgSettings, EDGELIGHT_OT_export_svg, EDGELIGHT_PT_lines_svg)
 
 
+_register_classes, _unregister_classes = bpy.utils.register_classes_factory(CLASSES)
+
+
 def register():
-    for cls in CLASSES:
-        bpy.utils.register_class(cls)
+    _register_classes()
     bpy.types.Scene.edgelight_svg = bpy.props.PointerProperty(type=EdgeLightSvgSettings)
 
 
 def unregister():
     del bpy.types.Scene.edgelight_svg
-    for cls in reversed(CLASSES):
-        bpy.utils.unregister_class(cls)
+    _unregister_classes()
