@@ -72,28 +72,25 @@ def main():
     out_dir = os.path.dirname(OUT)
     os.makedirs(out_dir, exist_ok=True)
     rows = []
-    for name in PARTS:
-        ppu = gt_scenes.px_per_unit_at_centre(gt_scenes.open_scene(name, 0.01, 1, RESOLUTION))
-        for width in WIDTHS:
-            regions = np.load(os.path.join(GT_DIR, f"gt_{name}_{width:g}px_regions.npz"))
-            radius = width / ppu
-            tag = os.path.join(out_dir, f"cy_{name}_{width:g}px")
-            s = cycles_scene(name, radius, REF_SAMPLES)
-            fillets.add_fillets(s, radius, 32)
-            s.render.engine = 'CYCLES'  # add_fillets turns EdgeLight's highlights off only
-            t_ref, ref = render(tag + "_reference")
-            images = {}
-            cycles_scene(name, radius, SAMPLES)
-            images["Cycles"] = render(tag + "_plain")
-            cycles_scene(name, radius, SAMPLES)
-            add_bevel_node(radius)
-            images["Cycles + Bevel node"] = render(tag + "_bevel")
-            for label, (dt, img) in images.items():
-                for rname in ("interior", "all"):
-                    rows.append((name, width, label, dt, rname, *gt_scenes.errors(img, ref, regions[rname])))
-                print(f"{name} {width:g}px {label}: {dt:.1f} s", flush=True)
-            rows.append((name, width, f"reference ({REF_SAMPLES} spp)", t_ref, "all", 0.0, 0.0, float("inf"), 0))
-            gt_scenes.write_csv(OUT, "part,width_px,method,time_s,region,rmse,max_err,psnr_db,pixels", rows)
+    for name, width, radius in gt_scenes.parts_and_radii(PARTS, WIDTHS, RESOLUTION):
+        regions = np.load(os.path.join(GT_DIR, f"gt_{name}_{width:g}px_regions.npz"))
+        tag = os.path.join(out_dir, f"cy_{name}_{width:g}px")
+        s = cycles_scene(name, radius, REF_SAMPLES)
+        fillets.add_fillets(s, radius, 32)
+        s.render.engine = 'CYCLES'  # add_fillets turns EdgeLight's highlights off only
+        t_ref, ref = render(tag + "_reference")
+        images = {}
+        cycles_scene(name, radius, SAMPLES)
+        images["Cycles"] = render(tag + "_plain")
+        cycles_scene(name, radius, SAMPLES)
+        add_bevel_node(radius)
+        images["Cycles + Bevel node"] = render(tag + "_bevel")
+        for label, (dt, img) in images.items():
+            for rname in ("interior", "all"):
+                rows.append((name, width, label, dt, rname, *gt_scenes.errors(img, ref, regions[rname])))
+            print(f"{name} {width:g}px {label}: {dt:.1f} s", flush=True)
+        rows.append((name, width, f"reference ({REF_SAMPLES} spp)", t_ref, "all", 0.0, 0.0, float("inf"), 0))
+        gt_scenes.write_csv(OUT, "part,width_px,method,time_s,region,rmse,max_err,psnr_db,pixels", rows)
     print("wrote", OUT)
 
 

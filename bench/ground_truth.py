@@ -90,35 +90,32 @@ def main():
     out_dir = os.path.dirname(OUT)
     os.makedirs(out_dir, exist_ok=True)
     rows = []
-    for name in PARTS:
-        ppu = gt_scenes.px_per_unit_at_centre(gt_scenes.open_scene(name, 0.01, 1, RESOLUTION))
-        for width in WIDTHS:
-            radius = width / ppu
-            t_ref, ref_rec = timed(name, radius, None, REF_SEGMENTS, REF_SAMPLES, 1)
-            ref = pixels(ref_rec)
-            images, times = {}, {}
-            for label, method, segments in METHODS:
-                times[label], rec = timed(name, radius, method, segments, SAMPLES, REPEAT)
-                images[label] = pixels(rec)
-                if label == "EdgeLight":  # where EdgeLight draws a band (its highlight alpha)
-                    band = np.asarray(rec["highlight"])[..., 3]
-                if label == "off":  # the sharp mesh's coverage and depth
-                    covered = np.asarray(rec["surface"])[..., 3] > 0.5
-                    inv_depth = np.asarray(rec["depth"])[..., 0]
-                print(f"{name} {width:4.1f}px {label:20s} {times[label]:.3f} s", flush=True)
-            s = configure(name, radius, None, 0, 1)  # the sharp part, for its edges' classes
-            changed = np.abs(gt_scenes.display(ref) - gt_scenes.display(images["off"])).max(axis=2) > 1.0 / 255.0
-            changed |= band > 1.0 / 255.0
-            region = gt_scenes.regions(s, changed, covered, width, inv_depth)
-            tag = f"{name}_{width:g}px"
-            np.save(os.path.join(out_dir, f"gt_{tag}_reference.npy"), ref.astype(np.float32))
-            np.savez_compressed(os.path.join(out_dir, f"gt_{tag}_regions.npz"), **region)
-            for label, _, _ in METHODS:
-                for rname, m in region.items():
-                    rows.append((name, width, radius, label, times[label], rname, *gt_scenes.errors(images[label], ref, m)))
-                np.save(os.path.join(out_dir, f"gt_{tag}_{label.replace(' ', '_')}.npy"), images[label].astype(np.float32))
-            rows.append((name, width, radius, REF, t_ref, "all", 0.0, 0.0, float("inf"), int(region["all"].sum())))
-            gt_scenes.write_csv(OUT, "part,width_px,radius,method,time_s,region,rmse,max_err,psnr_db,pixels", rows)
+    for name, width, radius in gt_scenes.parts_and_radii(PARTS, WIDTHS, RESOLUTION):
+        t_ref, ref_rec = timed(name, radius, None, REF_SEGMENTS, REF_SAMPLES, 1)
+        ref = pixels(ref_rec)
+        images, times = {}, {}
+        for label, method, segments in METHODS:
+            times[label], rec = timed(name, radius, method, segments, SAMPLES, REPEAT)
+            images[label] = pixels(rec)
+            if label == "EdgeLight":  # where EdgeLight draws a band (its highlight alpha)
+                band = np.asarray(rec["highlight"])[..., 3]
+            if label == "off":  # the sharp mesh's coverage and depth
+                covered = np.asarray(rec["surface"])[..., 3] > 0.5
+                inv_depth = np.asarray(rec["depth"])[..., 0]
+            print(f"{name} {width:4.1f}px {label:20s} {times[label]:.3f} s", flush=True)
+        s = configure(name, radius, None, 0, 1)  # the sharp part, for its edges' classes
+        changed = np.abs(gt_scenes.display(ref) - gt_scenes.display(images["off"])).max(axis=2) > 1.0 / 255.0
+        changed |= band > 1.0 / 255.0
+        region = gt_scenes.regions(s, changed, covered, width, inv_depth)
+        tag = f"{name}_{width:g}px"
+        np.save(os.path.join(out_dir, f"gt_{tag}_reference.npy"), ref.astype(np.float32))
+        np.savez_compressed(os.path.join(out_dir, f"gt_{tag}_regions.npz"), **region)
+        for label, _, _ in METHODS:
+            for rname, m in region.items():
+                rows.append((name, width, radius, label, times[label], rname, *gt_scenes.errors(images[label], ref, m)))
+            np.save(os.path.join(out_dir, f"gt_{tag}_{label.replace(' ', '_')}.npy"), images[label].astype(np.float32))
+        rows.append((name, width, radius, REF, t_ref, "all", 0.0, 0.0, float("inf"), int(region["all"].sum())))
+        gt_scenes.write_csv(OUT, "part,width_px,radius,method,time_s,region,rmse,max_err,psnr_db,pixels", rows)
     print("wrote", OUT)
 
 

@@ -227,3 +227,12 @@ def write_csv(path, header, rows):
         f.write(header + "\n")
         for r in rows:
             f.write(",".join(str(v) if not isinstance(v, float) else f"{v:.6g}" for v in r) + "\n")
+
+
+def parts_and_radii(parts, widths, resolution):
+    """(part, width in pixels, the radius of that width at the part's centre) for every part and
+    width, each part's scale measured once."""
+    for name in parts:
+        ppu = px_per_unit_at_centre(open_scene(name, 0.01, 1, resolution))
+        for width in widths:
+            yield name, width, width / ppu
