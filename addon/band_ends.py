@@ -24,6 +24,18 @@ def _next_loop(polys, loop, poly):
     return start + (rel + 1) % total, start + (rel - 1) % total
 
 
+def _loop_lookup(polys):
+    """Sorted keys (edge * polygon count + polygon) of every loop, and the loops in that order:
+    which loop of a polygon runs along an edge. Built once per mesh (a material change re-chooses
+    edges without re-reading the mesh) and kept on the Polygons."""
+    if polys.loop_lookup is None:
+        count = len(polys.start)
+        keys = polys.loop_edge.astype(np.int64) * count + np.repeat(np.arange(count, dtype=np.int64), polys.total)
+        order = np.argsort(keys, kind="stable")
+        polys.loop_lookup = (keys[order], order)
+    return polys.loop_lookup
+
+
 def end_angles(polys, positions, normals, edges, sel, faces, rounded):
     """(N, 4) float32 cut angles of edges `sel`: (p0 on N1's face, p0 on N2's face, p1 on N1's
     face, p1 on N2's face). faces (N, 2): each edge's two loop triangles; rounded: per mesh edge,
@@ -37,10 +49,7 @@ def end_angles(polys, positions, normals, edges, sel, faces, rounded):
     e = p1 - p0
     e /= np.maximum(np.linalg.norm(e, axis=1, keepdims=True), 1e-30)
     count = len(polys.start)
-    poly_of_loop = np.repeat(np.arange(count, dtype=np.int64), polys.total)
-    keys = polys.loop_edge.astype(np.int64) * count + poly_of_loop
-    order = np.argsort(keys, kind="stable")
-    keys = keys[order]
+    keys, order = _loop_lookup(polys)
     if not len(keys):
         return out
     inside = (np.cross(normals[sel, :3].astype(np.float64), e), np.cross(e, normals[sel, 3:].astype(np.float64)))

@@ -49,7 +49,9 @@ from mathutils import Vector
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "blender"))
+sys.path.insert(0, os.path.join(ROOT, "bench"))
 import line_reference as ref  # noqa: E402
+import lines_bench  # noqa: E402  (add_lineart)
 import test_line_visibility  # noqa: E402  (tube(): the hollow cylinder and the shell)
 
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
@@ -315,35 +317,6 @@ def frame_camera(cam, ob, scene, direction):
     cam.data.clip_end = dist + radius * 1.5
 
 
-def add_lineart(scene, mesh_ob):
-    gpd = bpy.data.grease_pencils.new("LineArt")
-    gpd.stroke_thickness_space = 'SCREENSPACE'  # thickness in pixels, like the others' widths
-    gp_ob = bpy.data.objects.new("LineArt", gpd)
-    scene.collection.objects.link(gp_ob)
-    layer = gpd.layers.new("Lines", set_active=True)
-    layer.frames.new(scene.frame_current)
-    ink = bpy.data.materials.new("LineArtInk")
-    bpy.data.materials.create_gpencil_data(ink)
-    ink.grease_pencil.color = (0.0, 0.0, 0.0, 1.0)
-    ink.grease_pencil.show_fill = False
-    gpd.materials.append(ink)
-    mod = gp_ob.grease_pencil_modifiers.new("LineArt", 'GP_LINEART')
-    mod.source_type = 'OBJECT'
-    mod.source_object = mesh_ob
-    mod.target_layer = layer.info
-    mod.target_material = ink
-    mod.use_contour = True  # silhouettes; Line Art also counts mesh borders as contour
-    mod.use_crease = True
-    for flag in ("use_loose", "use_material", "use_edge_mark", "use_intersection",
-                 "use_light_contour", "use_shadow"):
-        if hasattr(mod, flag):
-            setattr(mod, flag, False)
-    mod.crease_threshold = math.radians(180.0 - CREASE_DEG)
-    mod.use_crease_on_smooth = True
-    mod.level_start = mod.level_end = 0  # visible lines only
-    return gp_ob, mod
-
-
 # ---------------------------------------------------------------------------------------------
 # Measuring
 
@@ -433,7 +406,7 @@ def run_mesh(name, args, scene, cam, holdout, edgelight, rows):
         f"({time.perf_counter() - t1:.1f} s ray casts, {t1 - t0:.1f} s load)")
     gp_ob = mod = None
     if "lineart" in args.methods:
-        gp_ob, mod = add_lineart(scene, ob)
+        gp_ob, mod = lines_bench.add_lineart(scene, ob, CREASE_DEG, thickness=1, screen_space=True)
         gp_ob.hide_render = True
     for size in args.sizes:
         scene.render.resolution_x, scene.render.resolution_y = size

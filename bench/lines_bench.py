@@ -307,8 +307,14 @@ def set_eevee(scene, freestyle):
     scene.render.use_freestyle = freestyle
 
 
-def add_lineart(scene, mesh_ob):
+def add_lineart(scene, mesh_ob, crease_deg=CREASE_DEG, thickness=10, screen_space=False):
+    """Line Art (a Grease Pencil object) drawing `mesh_ob`'s visible silhouettes and creases
+    above `crease_deg` between face normals, in black: (its object, its modifier). thickness 10
+    is about Freestyle's 1.5 px at 640x480 (thinner strokes fade out in places); screen_space
+    makes the thickness pixels, like the other renderers' widths."""
     gpd = bpy.data.grease_pencils.new("LineArt")
+    if screen_space:
+        gpd.stroke_thickness_space = 'SCREENSPACE'
     gp_ob = bpy.data.objects.new("LineArt", gpd)
     scene.collection.objects.link(gp_ob)
     layer = gpd.layers.new("Lines", set_active=True)
@@ -325,19 +331,15 @@ def add_lineart(scene, mesh_ob):
     mod.target_material = ink
     mod.use_contour = True      # silhouettes; Line Art also marks mesh borders as contour
     mod.use_crease = True
-    mod.use_loose = False
-    mod.use_material = False
-    mod.use_edge_mark = False
-    mod.use_intersection = False
-    if hasattr(mod, "use_light_contour"):
-        mod.use_light_contour = False
-    if hasattr(mod, "use_shadow"):
-        mod.use_shadow = False
-    mod.crease_threshold = math.radians(180.0 - CREASE_DEG)  # face angle, like Freestyle
+    for flag in ("use_loose", "use_material", "use_edge_mark", "use_intersection",
+                 "use_light_contour", "use_shadow"):  # the last two not on every version
+        if hasattr(mod, flag):
+            setattr(mod, flag, False)
+    mod.crease_threshold = math.radians(180.0 - crease_deg)  # face angle, like Freestyle
     mod.use_crease_on_smooth = True  # crease on every face whatever its shading flag
     mod.level_start = mod.level_end = 0  # visible lines only
-    mod.thickness = 10  # about Freestyle's 1.5 px at 640x480; thinner strokes fade out in places
-    return gp_ob
+    mod.thickness = thickness
+    return gp_ob, mod
 
 
 def lineart_stroke_count(gp_ob):
@@ -390,7 +392,7 @@ def run_mesh(name, args, scene, cam, mat, results):
 
     # The Line Art object exists throughout, hidden from render except for its own render:
     # render depsgraphs leave hide_render objects out, so the other methods never evaluate it.
-    gp_ob = add_lineart(scene, ob)
+    gp_ob, _ = add_lineart(scene, ob)
     gp_ob.hide_render = True
     bpy.context.view_layer.update()
     row["lineart_strokes"] = lineart_stroke_count(gp_ob)
@@ -540,4 +542,5 @@ def main():
     write_outputs(args, results)
 
 
-main()
+if __name__ == "__main__":
+    main()
