@@ -60,8 +60,14 @@ def choose_edges(d, shading):
     radius = np.minimum(np.where(pick_a, rad_a, np.inf), np.where(pick_b, rad_b, np.inf)).astype(np.float32)
     # No larger than the faces allow (Clamp Overlap): past that a band is no fillet's image.
     picked_edges = np.flatnonzero(chosen)
+    # A face is its smooth patch, up to the next rounded, sharp or open edge: a fillet runs on
+    # across the facets of a triangulated curved surface, and ends where the patch does.
+    stop = ~ok | chosen | sharp | (angles > radius_clamp.SMOOTH_FOLD_DEG)
     if d.polygons is not None and len(picked_edges):
-        limit = radius_clamp.max_radius(d.widths_of(picked_edges), angles[picked_edges])
+        need = 2.0 * radius[picked_edges] * radius_clamp.setback(angles[picked_edges])
+        widths = radius_clamp.across_patches(d.polygons, positions, edges, d.edge_polygons(), stop, picked_edges,
+                                             d.widths_of(picked_edges), need)
+        limit = radius_clamp.max_radius(widths, angles[picked_edges])
         radius[picked_edges] = np.minimum(radius[picked_edges], limit).astype(np.float32)
     else:
         limit = np.full(len(picked_edges), np.inf)
@@ -75,5 +81,6 @@ def choose_edges(d, shading):
         out[int(slot)] = EdgeSet(positions[edges[sel, 0]], positions[edges[sel, 1]],
                                  np.ascontiguousarray(normals[sel, :3]), np.ascontiguousarray(normals[sel, 3:]),
                                  radius[sel], surface_ids(d, faces),
-                                 band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen))
+                                 band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen,
+                                                      ~stop, d.edge_polygons()))
     return out

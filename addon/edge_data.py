@@ -24,6 +24,7 @@ class EdgeData:
     surface_id: np.ndarray = None      # per triangle: 1 + its place in the slot-ordered surface batches
     polygons: object = None            # radius_clamp.Polygons
     face_widths: np.ndarray = None     # (E, 2) width of each edge's faces across it, NaN until needed
+    edge_polys: np.ndarray = None      # (E, 2) polygons of each edge's first two faces, once needed
 
     def widths_of(self, sel):
         """The face widths of edges `sel`, computed once per edge (radius_clamp)."""
@@ -34,6 +35,14 @@ class EdgeData:
             faces = np.stack([self.face_a[todo], self.face_b[todo]], axis=1)
             self.face_widths[todo] = radius_clamp.widths(self.polygons, self.positions, self.edges[todo], faces)
         return self.face_widths[sel]
+
+    def edge_polygons(self):
+        """(E, 2) the polygons of each edge's first two faces (-1: none), for walks across patches; None without polygons."""
+        if self.edge_polys is None and self.polygons is not None:
+            tri_poly = self.polygons.tri_poly
+            self.edge_polys = np.stack([np.where(f >= 0, tri_poly[np.maximum(f, 0)], -1)
+                                        for f in (self.face_a, self.face_b)], axis=1)
+        return self.edge_polys
 
 
 def first_two_faces(tri_edges, edge_count):

@@ -1,3 +1,27 @@
+#ifdef EL_EDGE_IDS
+/* View depth where the ray through pixel centre pc meets the plane through world point X with
+ * world normal n spanned by edge_dir and the in-plane direction across it; -1 where the plane is
+ * seen edge-on. The ray is where two planes of the projection meet (clip x = ndc.x clip w, clip
+ * y = ndc.y clip w), so any projection (perspective or orthographic, shifted, jittered) works. */
+float el_plane_depth(vec2 pc, vec3 X, vec3 n)
+{
+  vec2 ndc = pc * frame.viewport.zw * 2.0 - 1.0;
+  mat4 P = frame.projection;
+  vec4 r0 = vec4(P[0][0], P[1][0], P[2][0], P[3][0]), r1 = vec4(P[0][1], P[1][1], P[2][1], P[3][1]);
+  vec4 r3 = vec4(P[0][3], P[1][3], P[2][3], P[3][3]);
+  vec4 a = r0 - ndc.x * r3, b = r1 - ndc.y * r3;
+  vec3 nv = cross(mat3(frame.view) * edge_dir, mat3(frame.view) * cross(n, edge_dir));
+  vec4 c = vec4(nv, -dot(nv, (frame.view * vec4(X, 1.0)).xyz));
+  vec3 bc = cross(b.xyz, c.xyz);
+  float det = dot(a.xyz, bc);
+  if (!(abs(det) > 1e-6 * length(a.xyz) * length(bc))) {
+    return -1.0;
+  }
+  vec3 p = -(a.w * bc + b.w * cross(c.xyz, a.xyz) + c.w * cross(a.xyz, b.xyz)) / det;
+  return -p.z;
+}
+#endif
+
 /* Edge highlight pass: which pixels of the quad may show the band (visibility against the surface
  * pass), and what each shows of it (edge_band_pixel.glsl): the rounded edge's shading integrated
  * over the part of its arc the pixel sees, weighted by the pixel's coverage of the projected band.
@@ -40,6 +64,18 @@ void main()
     }
   }
   float bias = own ? 3.0e38 : 0.5 * world_per_px + 1e-5 * dist;
+  /* Over another face: the band lies on the plane of the face on this pixel's side (a fillet
+   * runs on across a smooth patch's facets, as far as the radius clamp lets it), so that plane's
+   * depth here is what a surface must not be nearer than; the edge line's depth would hide
+   * wide bands on facets that turn toward the eye. */
+  vec3 n_here = across * edge_far.z >= 0.0 ? edge_n1 : edge_n2;
+  if (dot(n_here, V) <= 0.0) {
+    n_here = across * edge_far.z >= 0.0 ? edge_n2 : edge_n1; /* a silhouette: its one face in view */
+  }
+  float plane_depth = own || dot(n_here, V) <= 0.0 ? -1.0 : el_plane_depth(pc, X, n_here);
+  if (plane_depth > 0.0) {
+    edge_depth = plane_depth;
+  }
 #else
   /* Without ids (the OSMesa renderer): the edge lies on its own surface, whose depth at pixels
    * next to the line differs by up to the lateral distance times the faces' depth slope. */

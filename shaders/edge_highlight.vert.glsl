@@ -65,13 +65,18 @@ float el_reach_past(vec2 a, vec2 b, vec2 outward, vec2 across, float half_px, fl
 }
 
 /* The world point of the edge's line whose image is at lambda along s0 -> s1 (0 and 1: the
- * ends), perspective-correct; kept within half the edge past either end (an edge seen end-on
- * has next to no image to reach along). */
+ * ends), perspective-correct; at most a few edge lengths past either end (the quad's reach past
+ * an end is bounded on screen, el_reach_past's cap), and well in front of the eye: clip w is
+ * affine along the line, so it is kept above half the nearer end's. */
 vec3 el_line_point(vec3 w0, vec3 w1, float iw0, float iw1, float lambda)
 {
   float den = (1.0 - lambda) * iw0 + lambda * iw1;
-  float t = den > 0.0 ? lambda * iw1 / den : lambda;
-  return w0 + clamp(t, -0.5, 1.5) * (w1 - w0);
+  float t = clamp(den > 0.0 ? lambda * iw1 / den : lambda, -4.0, 5.0);
+  float cw0 = 1.0 / iw0, cw1 = 1.0 / iw1, least = 0.5 * min(cw0, cw1);
+  if (mix(cw0, cw1, t) < least) {
+    t = (least - cw0) / (cw1 - cw0);
+  }
+  return w0 + t * (w1 - w0);
 }
 
 /* Edge highlight pass: one screen-space quad per rounded edge (no wide GL lines, no geometry
@@ -152,11 +157,15 @@ void main()
   float lo = sides.x, hi = sides.y;
   float offset = corner.y < 0.0 ? lo - 0.5 - 1.0 / 64.0 : hi + 0.5 + 1.0 / 64.0;
 
-  /* Past each end as far as a cut there leans outwards on screen (at most the edge's own image
-   * length: an edge seen end-on has no direction to reach along), along the edge's line: still a
-   * parallelogram, so edge_point still interpolates to each pixel's foot on the line. */
+  /* Past each end as far as a cut there leans outwards on screen (up to twice the band's widest
+   * reach, whichever sides the quad was fitted to; an edge seen end-on, under a pixel long, has
+   * no direction to reach along, so at most its own image length there), along the edge's line:
+   * still a parallelogram, so edge_point still interpolates to each pixel's foot on the line. A
+   * band wider than its edge is long (a short piece of a rim) leans past it by more than the
+   * edge's length. */
   float side_px = max(abs(lo), abs(hi)) + 0.5;
-  float cap = max(min(2.0 * side_px, len), 1.0 / 64.0);
+  float most = 2.0 * (half_px + 0.5);
+  float cap = max(len >= 1.0 ? most : min(most, len), 1.0 / 64.0);
   float past0 = el_reach_past(edge_cut0.xy, edge_cut0.zw, -dir, across, side_px, cap) / max(len, 1e-6);
   float past1 = el_reach_past(edge_cut1.xy, edge_cut1.zw, dir, across, side_px, cap) / max(len, 1e-6);
   world = el_line_point(w0, w1, 1.0 / c0.w, 1.0 / c1.w, corner.x < 0.5 ? -past0 : 1.0 + past1);
