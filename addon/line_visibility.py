@@ -38,20 +38,49 @@ def visible(c, z, faces, instance_id, outline, depth, ids, px_per_unit, perspect
     yc, xc = np.clip(q[:, 1], 0, h - 1), np.clip(q[:, 0], 0, w - 1)
     id_c = ids[yc, xc, :2]
     inv_c = depth[yc, xc]
-    # The farthest of the 3x3 pixels that show something other than the centre pixel's face.
-    inv_other = inv_c.copy()
-    own = np.zeros(n, bool)
+    world_per_px = (z if perspective else np.float32(1.0)) / np.float32(px_per_unit)
+    bias = np.float32(0.5) * world_per_px + np.float32(REL_BIAS) * np.abs(z)
+    # The 3x3 pixels' ids and depths, k = (dy + 1) * 3 + (dx + 1) as in the shader.
+    nid, ninv, own = [], [], np.zeros(n, bool)
     for dy in (-1, 0, 1):
         y = np.clip(q[:, 1] + dy, 0, h - 1)
         for dx in (-1, 0, 1):
             x = np.clip(q[:, 0] + dx, 0, w - 1)
             fid = ids[y, x, 1]
             own |= (ids[y, x, 0] == inst) & (fid > 0.0) & ((fid == faces[:, 0]) | (fid == faces[:, 1]))
-            other = np.any(ids[y, x, :2] != id_c, axis=1)
-            inv_other = np.where(other, np.minimum(inv_other, depth[y, x]), inv_other)
-    inv_shown = np.where(outline, inv_other, inv_c)
-    world_per_px = (z if perspective else np.float32(1.0)) / np.float32(px_per_unit)
-    bias = np.float32(0.5) * world_per_px + np.float32(REL_BIAS) * np.abs(z)
+            nid.append(ids[y, x, :2])
+            ninv.append(depth[y, x])
+    same = [np.all(i == id_c, axis=1) for i in nid]
+    # The centre face's step of 1/z per pixel (1/z is affine across a plane), from a pixel beside
+    # the centre that shows the same face.
+    right, left = (q[:, 0] < w - 1) & same[5], (q[:, 0] > 0) & same[3]
+    up, down = (q[:, 1] < h - 1) & same[7], (q[:, 1] > 0) & same[1]
+    gx = np.where(right, ninv[5] - inv_c, inv_c - ninv[3])
+    gy = np.where(up, ninv[7] - inv_c, inv_c - ninv[1])
+    has_gx, has_gy = right | left, up | down
+    # The centre face continued along its plane to the line's point c, and whether the line lies
+    # more than a footprint under it there.
+    at_c = c - (q.astype(np.float32) + np.float32(0.5))
+    inv_at = inv_c + at_c[:, 0] * gx + at_c[:, 1] * gy
+    plane_at = (inv_c > 0.0) & has_gx & has_gy & (inv_at > 0.0)
+    with np.errstate(divide="ignore"):
+        under = plane_at & (z > np.float32(1.0) / np.where(plane_at, inv_at, np.float32(1.0)) + world_per_px + bias)
+    # The farthest of the 3x3 pixels beyond an outline of the centre pixel's face: showing
+    # something else, and not the continuation of its plane (a seam of one flat surface).
+    inv_other = inv_c.copy()
+    for k in range(9):
+        dx, dy = k % 3 - 1, k // 3 - 1
+        known = (inv_c > 0.0) & (ninv[k] > 0.0) & (has_gx if dx else True) & (has_gy if dy else True)
+        plane = inv_c + (dx * gx if dx else np.float32(0.0)) + (dy * gy if dy else np.float32(0.0))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            off = np.abs(np.float32(1.0) / np.where(known, ninv[k], np.float32(1.0))
+                         - np.float32(1.0) / np.where(known & (plane > 0.0), plane, np.float32(1.0)))
+        seam = known & (plane > 0.0) & (off <= bias)
+        beyond = ~same[k] & ~seam
+        inv_other = np.where(beyond, np.minimum(inv_other, ninv[k]), inv_other)
+    # Empty space beyond (an outline against the background) overrules the centre face's plane.
+    under &= inv_other > 0.0
+    inv_shown = np.where(outline & ~under, inv_other, inv_c)
     with np.errstate(divide="ignore"):
         behind_ok = z <= np.float32(1.0) / np.where(inv_shown > 0.0, inv_shown, np.float32(1.0)) + bias
     return own | (inv_shown <= 0.0) | behind_ok

@@ -45,14 +45,13 @@ import zlib
 
 import bpy
 import numpy as np
-from mathutils import Vector
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "blender"))
 sys.path.insert(0, os.path.join(ROOT, "bench"))
 import line_reference as ref  # noqa: E402
 import lines_bench  # noqa: E402  (add_lineart)
-import test_line_visibility  # noqa: E402  (tube(): the hollow cylinder and the shell)
+import test_line_visibility  # noqa: E402  (tube(), imported(), frame_camera())
 
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
 ASSIMP = "/usr/share/assimp/models"
@@ -154,37 +153,6 @@ def object_from(name, verts, faces):
     return ob
 
 
-def imported(path):
-    """One object from Blender's own importer: the file's objects joined, equal positions welded
-    (STL stores each triangle's corners apart), no object transform left."""
-    before = set(bpy.data.objects)
-    ext = os.path.splitext(path)[1].lower()
-    if ext == ".obj":
-        bpy.ops.wm.obj_import(filepath=path)
-    elif ext == ".stl":
-        bpy.ops.import_mesh.stl(filepath=path)
-    elif ext == ".ply":
-        bpy.ops.import_mesh.ply(filepath=path)
-    else:
-        raise ValueError(path)
-    obs = [o for o in bpy.data.objects if o not in before and o.type == 'MESH']
-    import bmesh
-    bm = bmesh.new()
-    for o in obs:
-        o.data.transform(o.matrix_world)
-        bm.from_mesh(o.data)
-    for o in obs:
-        bpy.data.objects.remove(o, do_unlink=True)
-    bmesh.ops.remove_doubles(bm, verts=bm.verts[:], dist=1e-6 * max(1e-9, max(
-        (max(v.co[k] for v in bm.verts) - min(v.co[k] for v in bm.verts)) for k in range(3))))
-    me = bpy.data.meshes.new(os.path.basename(path))
-    bm.to_mesh(me)
-    bm.free()
-    ob = bpy.data.objects.new(me.name, me)
-    bpy.context.scene.collection.objects.link(ob)
-    return ob
-
-
 def load_mesh(name, args):
     source, _ = MESHES[name]
     if source == "tube":
@@ -194,7 +162,7 @@ def load_mesh(name, args):
     if source.startswith("cgal:"):
         ob = object_from(name, *read_off(cgal_off(source[5:], args.cache)))
     else:
-        ob = imported(os.path.join(ASSIMP, source[7:]))
+        ob = test_line_visibility.imported(os.path.join(ASSIMP, source[7:]))
     # Centred, largest extent 2, flat: the reference's and Freestyle's silhouettes are then the
     # face-facing ones EdgeLight draws (no smooth contours).
     me = ob.data
@@ -298,25 +266,6 @@ def setup_scene():
     return scene, cam, holdout, edgelight
 
 
-def frame_camera(cam, ob, scene, direction):
-    """The bounding sphere in frame from `direction` (perspective, 50 mm)."""
-    co = np.empty(len(ob.data.vertices) * 3)
-    ob.data.vertices.foreach_get("co", co)
-    co = co.reshape(-1, 3)
-    centre = (co.min(axis=0) + co.max(axis=0)) / 2.0
-    radius = float(np.linalg.norm(co - centre, axis=1).max())
-    aspect = scene.render.resolution_x / scene.render.resolution_y
-    half_w = math.atan(cam.data.sensor_width / 2.0 / cam.data.lens)
-    half = math.atan(math.tan(half_w) / aspect) if aspect >= 1.0 else half_w
-    dist = radius / math.sin(half) * 1.02
-    d = Vector(direction).normalized()
-    cam.location = Vector(centre.tolist()) + d * dist
-    cam.rotation_mode = 'QUATERNION'
-    cam.rotation_quaternion = (-d).to_track_quat('-Z', 'Y')
-    cam.data.clip_start = max(1e-3, dist - radius * 1.5)
-    cam.data.clip_end = dist + radius * 1.5
-
-
 # ---------------------------------------------------------------------------------------------
 # Measuring
 
@@ -391,7 +340,7 @@ def run_mesh(name, args, scene, cam, holdout, edgelight, rows):
     ob.data.materials.append(holdout)
     big = max(args.sizes, key=lambda s: s[0])
     scene.render.resolution_x, scene.render.resolution_y = big  # before framing: its aspect counts
-    frame_camera(cam, ob, scene, MESHES[name][1])
+    test_line_visibility.frame_camera(cam, ob, scene, MESHES[name][1])
     tris = sum(len(p.vertices) - 2 for p in ob.data.polygons)
     # One EdgeLight render gives the camera the reference projects with.
     scene.render.engine = "EDGELIGHT"

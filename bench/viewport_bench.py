@@ -11,6 +11,8 @@ time), with highlights off (surface only), on, on with the edge pass's floor (it
 fragment shader that does next to nothing: its cost before any shading; bench/edge_methods.py), and off
 with ink lines (silhouettes, creases above 45 degrees, borders: a native view update and new
 silhouette batches per draw); 'static' redraws an unchanged view (the cached image). Times come from bpy.ops.wm.redraw_timer, best of REPEAT runs.
+Before each run, a mode draws once a view the run never draws (turned -1 degree), so that no
+timed orbit draw finds its image cached. bench/scaling_bench.py imports the helpers here.
 """
 import math
 import os
@@ -19,6 +21,7 @@ import time
 
 import bpy
 import numpy as np
+from mathutils import Quaternion
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "bench"))
@@ -93,6 +96,11 @@ def part_array(triangles):
     return side * step
 
 
+def turned(rotation, degrees):
+    """`rotation` (a view rotation) turned by `degrees` about the view's Z: one orbit step."""
+    return rotation @ Quaternion((0, 0, 1), math.radians(degrees))
+
+
 def draw_ms(orbit, frames=FRAMES, repeat=REPEAT):
     window, area, region = view3d()
     rv3d = region.data
@@ -101,15 +109,27 @@ def draw_ms(orbit, frames=FRAMES, repeat=REPEAT):
         t0 = time.perf_counter()
         for _ in range(frames):
             if orbit:
-                rv3d.view_rotation = rv3d.view_rotation @ __import__("mathutils").Quaternion((0, 0, 1), math.radians(1.0))
+                rv3d.view_rotation = turned(rv3d.view_rotation, 1.0)
             with bpy.context.temp_override(window=window, area=area, region=region):
                 bpy.ops.wm.redraw_timer(type='DRAW', iterations=1)
         best = min(best, (time.perf_counter() - t0) / frames * 1000.0)
     return best
 
 
-def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
-    window, area, region = view3d()
+def warm_up(start):
+    """One draw of a view that no timed orbit draws (`start` turned by -1 degree; the timed runs
+    turn +1 degree per draw from `start`): extraction, batches, shaders, a new mode's first image,
+    without leaving the timed run's first view in a cache. Then back to `start`."""
+    rv3d = view3d()[2].data
+    rv3d.view_rotation = turned(start, -1.0)
+    draw_ms(False, 1, 1)
+    rv3d.view_rotation = start
+
+
+def rendered_view(distance=None):
+    """The 3D view in Rendered shading without overlays, in perspective, looking at the origin
+    from `distance` if given; 1 EdgeLight viewport sample. Returns the view's RegionView3D."""
+    _, area, region = view3d()
     space = area.spaces.active
     space.shading.type = 'RENDERED'
     space.overlay.show_overlays = False
@@ -118,8 +138,13 @@ def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
     if distance:
         rv3d.view_location = (0, 0, 0)
         rv3d.view_distance = distance
+    bpy.context.scene.edgelight.viewport_samples = 1
+    return rv3d
+
+
+def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
+    rv3d = rendered_view(distance)
     scene = bpy.context.scene
-    scene.edgelight.viewport_samples = 1
     result = {}
     start = rv3d.view_rotation.copy()
     # The modes take turns, `repeat` rounds, best of each: load from elsewhere on this shared
@@ -137,8 +162,7 @@ def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
                 edge_methods.use("partial", floor=True)
             else:
                 edge_methods.restore()
-            draw_ms(True, 1, 1)  # warm up: extraction, batches, shaders; a new mode's first image
-            rv3d.view_rotation = start
+            warm_up(start)
             if not orbit:
                 draw_ms(False, 1, 1)  # the image of the start view, which the static runs redraw
             result[label] = min(result.get(label, float("inf")), draw_ms(orbit, frames, 1))
@@ -186,11 +210,10 @@ def steps():
     print("\n".join(lines), flush=True)
 
 
-def main():
-    import edgelight
-    edgelight.engine.capture = True  # keep the viewport state and renders for the counts read here
-    gen = steps()
-
+def run(gen):
+    """Runs the generator `gen` from a timer, one step per tick, so that the UI redraws between
+    steps (a freshly opened file gets its 3D view); Blender exits when it ends (status 1 on an
+    exception)."""
     def tick():
         try:
             next(gen)
@@ -205,4 +228,11 @@ def main():
     bpy.app.timers.register(tick, first_interval=1.0, persistent=True)  # survives open_mainfile
 
 
-main()
+def main():
+    import edgelight
+    edgelight.engine.capture = True  # keep the viewport state and renders for the counts read here
+    run(steps())
+
+
+if __name__ == "__main__":  # Blender's --python runs the script as __main__; bench/scaling_bench.py imports it
+    main()

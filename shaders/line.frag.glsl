@@ -49,35 +49,72 @@ void main()
    * around the centre point, or else where what shows is no nearer than the line within half a
    * pixel's footprint. What shows is the centre pixel's surface; for a line that can lie on an
    * outline (line_vis.w: silhouettes, borders, contours) it is the farthest of the 3x3 pixels
-   * that show something other than the centre pixel's face (the background, or what lies
-   * behind on the outline's outer side), so an outline stays visible while a line under a
-   * surface seen at a grazing angle (one face across the 3x3) stays hidden. Unlike a depth bias
-   * that follows the faces' slope, the tolerance is fixed, so a wall thicker than half a
-   * pixel's footprint hides what lies behind it at any angle. */
+   * that lie beyond an outline of the centre pixel's face: that show something else, and not
+   * the continuation of its plane (a seam between faces of one flat surface, such as the
+   * diagonal of a quad, is no outline). So an outline stays visible while a line under a
+   * surface seen at a grazing angle stays hidden, even where the surface's triangles meet.
+   * Unlike a depth bias that follows the faces' slope, the tolerance is fixed: a wall thicker
+   * than half a pixel's footprint, plus its depth change over the half pixel between the line's
+   * point and the pixel's centre, hides what lies behind it at any angle. A line more
+   * than a footprint under the centre face at its own point (the face continued along its plane
+   * from the pixel's centre) is judged by that face alone unless empty space shows beyond: a part
+   * passing through the surface next to the line is no outline of it. */
   ivec2 q = ivec2(floor(c));
   ivec2 size = textureSize(surface_depth, 0) - 1;
   ivec2 qc = clamp(q, ivec2(0), size);
   vec2 id_c = texelFetch(surface_id, qc, 0).rg;
   float inv_c = texelFetch(surface_depth, qc, 0).r;
+  float inv_at = inv_c; /* the centre face's 1/z at the line's point c */
+  bool under = false;   /* the line lies more than a footprint under the centre face at c, and
+                         * nothing beyond it in the 3x3 is empty space */
   float inv_other = inv_c;
+  float world_per_px = (persp ? z : 1.0) / frame.camera.x;
+  float bias = 0.5 * world_per_px + line_vis.y * abs(z);
   /* Most ink lies on one of its own faces at the centre pixel: then the 3x3 walk is skipped
    * (whole 4x4 blocks of a stroke usually agree, so llvmpipe skips it too). */
   bool own = el_own_face(id_c);
   if (!own) {
-    for (int dy = -1; dy <= 1; dy++) {
-      for (int dx = -1; dx <= 1; dx++) {
-        ivec2 at = clamp(q + ivec2(dx, dy), ivec2(0), size);
-        vec2 id = texelFetch(surface_id, at, 0).rg;
-        own = own || el_own_face(id);
-        if (id != id_c) {
-          inv_other = min(inv_other, texelFetch(surface_depth, at, 0).r);
-        }
+    vec2 nid[9];
+    float ninv[9];
+    for (int k = 0; k < 9; k++) {
+      ivec2 at = clamp(q + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), size);
+      nid[k] = texelFetch(surface_id, at, 0).rg;
+      ninv[k] = texelFetch(surface_depth, at, 0).r;
+      own = own || el_own_face(nid[k]);
+    }
+    /* The centre face's step of 1/z per pixel in x and y (1/z is affine in screen space across
+     * a plane), from a pixel beside the centre that shows the same face; none: unknown. */
+    bool in_r = q.x < size.x, in_l = q.x > 0, in_u = q.y < size.y, in_d = q.y > 0;
+    bool has_gx = (in_r && nid[5] == id_c) || (in_l && nid[3] == id_c);
+    bool has_gy = (in_u && nid[7] == id_c) || (in_d && nid[1] == id_c);
+    float gx = (in_r && nid[5] == id_c) ? ninv[5] - inv_c : inv_c - ninv[3];
+    float gy = (in_u && nid[7] == id_c) ? ninv[7] - inv_c : inv_c - ninv[1];
+    /* The centre face continued along its plane to the line's own point c (up to 0.7 px from
+     * the pixel's centre): a line more than a footprint under it there lies under that face. */
+    if (inv_c > 0.0 && has_gx && has_gy) {
+      vec2 off = c - (vec2(q) + 0.5);
+      inv_at = inv_c + off.x * gx + off.y * gy;
+      under = inv_at > 0.0 && z > 1.0 / inv_at + world_per_px + bias;
+    }
+    for (int k = 0; k < 9; k++) {
+      if (nid[k] == id_c) {
+        continue;
+      }
+      int dx = k % 3 - 1, dy = k / 3 - 1;
+      bool seam = false;
+      if (inv_c > 0.0 && ninv[k] > 0.0 && (dx == 0 || has_gx) && (dy == 0 || has_gy)) {
+        float plane = inv_c + (dx != 0 ? float(dx) * gx : 0.0) + (dy != 0 ? float(dy) * gy : 0.0);
+        seam = plane > 0.0 && abs(1.0 / ninv[k] - 1.0 / plane) <= bias;
+      }
+      if (!seam) {
+        inv_other = min(inv_other, ninv[k]);
       }
     }
+    /* Empty space beyond: an outline against the background, whatever the centre face's plane
+     * says (near a convex outline, a facet's plane continued lies in front of the outline). */
+    under = under && inv_other > 0.0;
   }
-  float inv_shown = line_vis.w > 0.5 ? inv_other : inv_c;
-  float world_per_px = (persp ? z : 1.0) / frame.camera.x;
-  float bias = 0.5 * world_per_px + line_vis.y * abs(z);
+  float inv_shown = line_vis.w > 0.5 && !under ? inv_other : inv_c;
   bool visible = own || inv_shown <= 0.0 || z <= 1.0 / inv_shown + bias;
   float alpha = cov * line_color.a * (visible ? 1.0 : line_vis.x);
   if (alpha <= 0.0) {
