@@ -18,6 +18,16 @@ RECALL_MIN = 0.98
 STRAY_MAX = 0.002
 
 
+def linked_object(name, bm):
+    """A new object in the scene with bmesh `bm`'s geometry as its mesh (bm is freed)."""
+    mesh = bpy.data.meshes.new(name)
+    bm.to_mesh(mesh)
+    bm.free()
+    ob = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(ob)
+    return ob
+
+
 def tube(name, r_out=1.0, wall=0.03, height=2.0, segments=48, cone=0.0):
     """A hollow tube (cone > 0: a conical shell narrowing upwards by that much) whose wall is
     `wall` thick: outer and inner sides joined by annular rims, flat-shaded."""
@@ -35,12 +45,7 @@ def tube(name, r_out=1.0, wall=0.03, height=2.0, segments=48, cone=0.0):
         bm.faces.new((out_hi[i], out_hi[j], in_hi[j], in_hi[i]))        # top rim
         bm.faces.new((out_lo[j], out_lo[i], in_lo[i], in_lo[j]))        # bottom rim
     bmesh.ops.recalc_face_normals(bm, faces=bm.faces[:])
-    mesh = bpy.data.meshes.new(name)
-    bm.to_mesh(mesh)
-    bm.free()
-    ob = bpy.data.objects.new(name, mesh)
-    bpy.context.scene.collection.objects.link(ob)
-    return ob
+    return linked_object(name, bm)
 
 
 def roof_over_rafters(name, gap=0.03, tilt_deg=25.0):
@@ -57,12 +62,7 @@ def roof_over_rafters(name, gap=0.03, tilt_deg=25.0):
         bmesh.ops.translate(bm, vec=(x, 0.0, -gap - 0.125), verts=made)
     bmesh.ops.rotate(bm, cent=(0, 0, 0), matrix=mathutils.Matrix.Rotation(math.radians(tilt_deg), 3, "X"),
                      verts=bm.verts[:])
-    mesh = bpy.data.meshes.new(name)
-    bm.to_mesh(mesh)
-    bm.free()
-    ob = bpy.data.objects.new(name, mesh)
-    bpy.context.scene.collection.objects.link(ob)
-    return ob
+    return linked_object(name, bm)
 
 
 def imported(path):
@@ -87,12 +87,7 @@ def imported(path):
         bpy.data.objects.remove(o, do_unlink=True)
     bmesh.ops.remove_doubles(bm, verts=bm.verts[:], dist=1e-6 * max(1e-9, max(
         (max(v.co[k] for v in bm.verts) - min(v.co[k] for v in bm.verts)) for k in range(3))))
-    me = bpy.data.meshes.new(os.path.basename(path))
-    bm.to_mesh(me)
-    bm.free()
-    ob = bpy.data.objects.new(me.name, me)
-    bpy.context.scene.collection.objects.link(ob)
-    return ob
+    return linked_object(os.path.basename(path), bm)
 
 
 def frame_camera(cam, ob, scene, direction):
