@@ -64,9 +64,15 @@ def choose_edges(d, shading):
     # across the facets of a triangulated curved surface, and ends where the patch does.
     stop = ~ok | chosen | sharp | (angles > radius_clamp.SMOOTH_FOLD_DEG)
     if d.polygons is not None and len(picked_edges):
-        need = 2.0 * radius[picked_edges] * radius_clamp.setback(angles[picked_edges])
-        widths = radius_clamp.across_patches(d.polygons, positions, edges, d.edge_polygons(), stop, picked_edges,
-                                             d.widths_of(picked_edges), need)
+        # What the largest radius either side asks needs (the panel's note compares each side's).
+        asked = np.maximum(np.where(pick_a, rad_a, 0.0), np.where(pick_b, rad_b, 0.0))[picked_edges]
+        need = 2.0 * asked * radius_clamp.setback(angles[picked_edges])
+        # Polygons' widths only where a cheap lower bound of them leaves the clamp in doubt.
+        polys_of = d.edge_polygons()
+        widths = radius_clamp.width_bounds(d.polygons, positions, edges[picked_edges], polys_of[picked_edges])
+        doubt = np.flatnonzero(widths.min(axis=1) < need)
+        widths[doubt] = d.widths_of(picked_edges[doubt])
+        widths = radius_clamp.across_patches(d.polygons, positions, edges, polys_of, stop, picked_edges, widths, need)
         limit = radius_clamp.max_radius(widths, angles[picked_edges])
         radius[picked_edges] = np.minimum(radius[picked_edges], limit).astype(np.float32)
     else:

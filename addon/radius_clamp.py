@@ -142,6 +142,25 @@ def patch_walks(polys, positions, edges, edge_polys, stop, sel, start_poly, cap)
     return np.minimum(out, cap)
 
 
+def width_bounds(polys, positions, edges, edge_polys):
+    """(N, 2) a lower bound of widths() for edges (N, 2) whose polygons are edge_polys (N, 2)
+    (-1: none, bound 0): the farthest from the edge's line of three of the polygon's corners
+    (the first, and a third and two thirds of the way round), found without expanding every
+    corner. An edge whose fillets need no more than this is not clamped."""
+    out = np.zeros(edge_polys.shape)
+    a = positions[edges[:, 0]].astype(np.float64)
+    d = positions[edges[:, 1]].astype(np.float64) - a
+    length = np.maximum(np.linalg.norm(d, axis=1), 1e-30)
+    for side in range(2):
+        has = np.flatnonzero(edge_polys[:, side] >= 0)
+        p = edge_polys[has, side]
+        for k in range(3):
+            corner = polys.start[p] + (k * polys.total[p]) // 3
+            v = positions[polys.loop_vert[corner]].astype(np.float64) - a[has]
+            out[has, side] = np.maximum(out[has, side], np.linalg.norm(np.cross(d[has], v), axis=1) / length[has])
+    return out
+
+
 def setback(angle_deg):
     """How far a fillet of unit radius between faces folded by angle_deg meets each face from the
     edge: tan(alpha / 2), capped short of a full fold."""

@@ -96,5 +96,22 @@ class PatchWalks(unittest.TestCase):
         self.assertAlmostEqual(float(radius_clamp.max_radius(wide[:, :1], np.array([90.0]))[0]), 2.0, places=9)
 
 
+class WidthBounds(unittest.TestCase):
+    def test_a_lower_bound_exact_on_quads(self):
+        """width_bounds never exceeds widths (it looks at three corners of each polygon); on
+        quads, the first and the opposite corner, it is the width."""
+        for m, exact in ((triangulated_plate()[0], False), (folded_strip(6, 10.0), True)):
+            positions, edges, polys, tris = m
+            ep = edge_polygons(edges, polys)
+            inner = np.flatnonzero(ep[:, 1] >= 0)
+            tri_of_poly = {int(p): t for t, p in enumerate(polys.tri_poly)}
+            faces = np.vectorize(lambda p: tri_of_poly[int(p)])(ep[inner])
+            full = radius_clamp.widths(polys, positions, edges[inner], faces)
+            bound = radius_clamp.width_bounds(polys, positions, edges[inner], ep[inner])
+            self.assertTrue(np.all(bound <= full + 1e-12))
+            if exact:
+                np.testing.assert_allclose(bound, full, atol=1e-12)
+
+
 if __name__ == "__main__":
     unittest.main()
