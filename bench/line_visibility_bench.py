@@ -96,6 +96,8 @@ def parse_args():
     p.add_argument("--sizes", default="640x480,1280x960")
     p.add_argument("--widths", default="1,2,4")
     p.add_argument("--methods", default="edgelight,freestyle,lineart")
+    p.add_argument("--check", action="store_true",
+                   help="exit 1 if an EdgeLight setting misses recall >= 98 %% or stray <= 0.2 %% (the suite's test)")
     p.add_argument("--spacing", type=float, default=0.5, help="reference sample spacing, px of the largest size")
     p.add_argument("--cache", default=os.path.join(ROOT, "build", "line_meshes"))
     p.add_argument("--out", default=os.path.join(ROOT, "out", "line_visibility_bench.csv"))
@@ -488,6 +490,15 @@ def main():
         run_mesh(name, args, scene, cam, holdout, edgelight, rows)
         write_outputs(args, rows, started)  # a partial table survives an interrupted run
     log(f"wrote {args.out} and its .md, PNGs in {args.png_dir} ({time.time() - started:.0f} s)")
+    if args.check:
+        missed = [r for r in rows if r["method"] == "edgelight" and (
+            r["stray"] > STRAY_MAX or any(r[k] is not None and r[k] < RECALL_MIN for k in KINDS))]
+        for r in missed:
+            log(f"MISSED {r['mesh']} {r['size']} w{r['width']:g}: " + ", ".join(
+                f"{k} {r[k] * 100:.2f}%" for k in KINDS if r[k] is not None) + f", stray {r['stray'] * 100:.3f}%")
+        log(f"line visibility: {len(rows) - len(missed)} of {len(rows)} settings meet both targets")
+        sys.stdout.flush()
+        os._exit(1 if missed or not rows else 0)  # sys.exit from --python crashed Blender 3.4's teardown
 
 
 main()

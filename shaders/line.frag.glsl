@@ -84,7 +84,7 @@ void main()
     }
     /* The centre face's step of 1/z per pixel in x and y (1/z is affine in screen space across
      * a plane), from a pixel beside the centre that shows the same face; none: unknown. */
-    bool in_r = q.x < size.x, in_l = q.x > 0, in_u = q.y < size.y, in_d = q.y > 0;
+    bool in_r = q.x<size.x, in_l = q.x> 0, in_u = q.y<size.y, in_d = q.y> 0;
     bool has_gx = (in_r && nid[5] == id_c) || (in_l && nid[3] == id_c);
     bool has_gy = (in_u && nid[7] == id_c) || (in_d && nid[1] == id_c);
     float gx = (in_r && nid[5] == id_c) ? ninv[5] - inv_c : inv_c - ninv[3];
