@@ -7,6 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import band_ends, native, radius_clamp
+from .edge_data import shading_normals
 from .lines import surface_ids
 from .radius_clamp_notes import record_radius_clamps
 
@@ -84,8 +85,9 @@ def choose_edges(d, shading):
     for slot in np.unique(slot_a[chosen]):
         sel = np.flatnonzero(chosen & (slot_a == slot))
         faces = np.stack([face_a[sel], face_b[sel]], axis=1)
+        shaded = shading_normals(d, sel, normals)
         out[int(slot)] = EdgeSet(positions[edges[sel, 0]], positions[edges[sel, 1]],
-                                 np.ascontiguousarray(normals[sel, :3]), np.ascontiguousarray(normals[sel, 3:]),
+                                 np.ascontiguousarray(shaded[:, :3]), np.ascontiguousarray(shaded[:, 3:]),
                                  radius[sel], surface_ids(d, faces),
                                  band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen,
                                                       ~stop, d.edge_polygons()))

@@ -25,6 +25,8 @@ class EdgeData:
     polygons: object = None            # radius_clamp.Polygons
     face_widths: np.ndarray = None     # (E, 2) width of each edge's faces across it, NaN until needed
     edge_polys: np.ndarray = None      # (E, 2) polygons of each edge's first two faces, once needed
+    tri_verts: np.ndarray = None       # (T, 3) each triangle's vertices
+    corner_nor: np.ndarray = None      # (T, 3, 3) Blender's shading normal at each triangle corner
 
     def widths_of(self, sel):
         """The face widths of edges `sel`, computed once per edge (radius_clamp)."""
@@ -43,6 +45,48 @@ class EdgeData:
             self.edge_polys = np.stack([np.where(f >= 0, tri_poly[np.maximum(f, 0)], -1)
                                         for f in (self.face_a, self.face_b)], axis=1)
         return self.edge_polys
+
+
+# A side's shading normal further than this from its face's own normal is not taken (a custom
+# normal pointing elsewhere, a corner fan folded over): the face's normal stands.
+MAX_SHADING_TURN_DEG = 45.0
+
+
+def shading_normals(d, sel, normals):
+    """(N, 6) the two normals a rounded edge's arc runs between, as the library gives them (N1,
+    N2: `normals`, the faces' own), each turned to the normal the surface is shaded with on that
+    side along the edge: the mean of its triangle's corner normals at the edge's two ends. A
+    smooth-shaded curved face meets a fillet with its interpolated normal, not its flat one (the
+    arc from the flat normal left a seam along every rounded edge of a smooth part); on flat
+    faces the two are the same. A side keeps its face's normal where the corner normals are
+    missing or turned too far, or where taking them would turn the arc round."""
+    out = np.array(normals[sel], np.float64)
+    if d.corner_nor is None or d.tri_verts is None or not len(sel):
+        return out.astype(np.float32)
+    n_lib = out.reshape(-1, 2, 3)
+    shaded = np.zeros_like(n_lib)
+    for side, face in enumerate((d.face_a[sel], d.face_b[sel])):
+        t = np.maximum(face, 0)
+        corners = d.corner_nor[t].astype(np.float64)                       # (N, 3, 3)
+        at_end = (d.tri_verts[t][:, :, None] == d.edges[sel][:, None, :])  # (N, corner, end)
+        mean = np.einsum("nce,nck->nk", at_end.astype(np.float64), corners)
+        length = np.linalg.norm(mean, axis=1, keepdims=True)
+        mean = np.where((face >= 0)[:, None] & (length > 1e-6), mean / np.maximum(length, 1e-30), 0.0)
+        # Which of N1 / N2 this side is, and its sign: the library may have re-oriented the face.
+        d1, d2 = np.einsum("nk,nk->n", mean, n_lib[:, 0]), np.einsum("nk,nk->n", mean, n_lib[:, 1])
+        col = np.where(np.abs(d1) >= np.abs(d2), 0, 1)
+        flat = n_lib[np.arange(len(sel)), col]
+        cos = np.einsum("nk,nk->n", mean, flat)
+        take = np.abs(cos) >= np.cos(np.radians(MAX_SHADING_TURN_DEG))
+        shaded[np.arange(len(sel))[take], col[take]] = mean[take] * np.sign(cos[take])[:, None]
+    keep = np.all(np.linalg.norm(shaded, axis=2) > 0.5, axis=1)
+    # The same turn from N1 to N2 about the edge, so the fold's sign and the arc's order stand.
+    e = (d.positions[d.edges[sel, 1]] - d.positions[d.edges[sel, 0]]).astype(np.float64)
+    before = np.einsum("nk,nk->n", np.cross(n_lib[:, 0], n_lib[:, 1]), e)
+    after = np.einsum("nk,nk->n", np.cross(shaded[:, 0], shaded[:, 1]), e)
+    keep &= (np.sign(before) == np.sign(after)) & (np.abs(after) > 1e-6 * np.linalg.norm(e, axis=1))
+    n_lib[keep] = shaded[keep]
+    return n_lib.reshape(-1, 6).astype(np.float32)
 
 
 def first_two_faces(tri_edges, edge_count):

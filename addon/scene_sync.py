@@ -166,7 +166,8 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     nor = out.corner_nor.reshape(-1, 3, 3)
     out.smooth_faces = np.any(np.einsum("tck,tk->tc", nor, tri_normals) < 1.0 - 1e-5, axis=1)
     out.edge_data = EdgeData(m.edge_flags(), m.edge_angles(), m.edge_normals(), edges, positions,
-                             *first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id, polygons)
+                             *first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id, polygons,
+                             tri_verts=tri_verts, corner_nor=nor)
     out.edges = choose_edges(out.edge_data, shading)
     out.native = m
     out.update_lines(line_settings)

@@ -111,6 +111,47 @@ def chosen(result):
     return {slot: (e.p0[:, 0].astype(int).tolist(), e.radius.tolist()) for slot, e in result.items()}
 
 
+class ShadingNormals(unittest.TestCase):
+    """The normals a band's arc runs between are the ones the surface is shaded with next to it
+    (edge_data.shading_normals): one edge along x between a floor (z up, N1) and a wall (-y,
+    N2), a 90 degree convex fold."""
+
+    def edge(self, floor_corners, wall_corners, flip_wall=False):
+        n1, n2 = np.array([0.0, 0.0, 1.0]), np.array([0.0, -1.0, 0.0])
+        lib = np.r_[n1, -n2 if flip_wall else n2].astype(np.float32)[None]
+        d = edge_data.EdgeData(
+            flags=np.array([MANIFOLD], np.uint32), angles=np.array([90.0], np.float32), normals=lib,
+            edges=np.array([[0, 1]], np.uint32),
+            positions=np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, -1)], np.float32),
+            face_a=np.array([0]), face_b=np.array([1]), tri_slot=np.zeros(2, np.int64),
+            sharp=np.zeros(1, bool), bevel=np.zeros(1, np.float32),
+            tri_verts=np.array([[0, 1, 2], [1, 0, 3]]),
+            corner_nor=np.array([floor_corners, wall_corners], np.float32))
+        return edge_data.shading_normals(d, np.array([0]), lib)[0]
+
+    def test_flat_faces_keep_their_normals(self):
+        got = self.edge([[0, 0, 1]] * 3, [[0, -1, 0]] * 3)
+        np.testing.assert_allclose(got, [0, 0, 1, 0, -1, 0], atol=1e-6)
+
+    def test_smooth_sides_take_the_mean_of_the_corners_at_the_edge(self):
+        tilt = np.array([0.0, -np.sin(0.2), np.cos(0.2)])
+        other = np.array([0.0, np.sin(0.4), np.cos(0.4)])
+        # The floor's corners at the edge's ends (vertices 0 and 1) lean towards the wall; its
+        # third corner (off the edge) is not counted.
+        got = self.edge([tilt, tilt, other], [[0, -1, 0]] * 3)
+        np.testing.assert_allclose(got[:3], tilt, atol=1e-6)
+        np.testing.assert_allclose(got[3:], [0, -1, 0], atol=1e-6)
+
+    def test_a_reoriented_face_keeps_the_librarys_sign(self):
+        got = self.edge([[0, 0, 1]] * 3, [[0, -1, 0]] * 3, flip_wall=True)
+        np.testing.assert_allclose(got[3:], [0, 1, 0], atol=1e-6)
+
+    def test_corners_turned_too_far_are_not_taken(self):
+        far = np.array([0.0, -np.sin(1.0), np.cos(1.0)])  # 57 degrees from the floor's normal
+        got = self.edge([far, far, far], [[0, -1, 0]] * 3)
+        np.testing.assert_allclose(got[:3], [0, 0, 1], atol=1e-6)
+
+
 class ChooseEdges(unittest.TestCase):
     def test_angle_rule_rounds_edges_past_the_angle(self):
         got = edge_choice.choose_edges(edges_of([10.0, 30.0, 31.0, 90.0]), [Shading()])
