@@ -48,8 +48,11 @@ class EdgeData:
 
 
 # A side's shading normal further than this from its face's own normal is not taken (a custom
-# normal pointing elsewhere, a corner fan folded over): the face's normal stands.
-MAX_SHADING_TURN_DEG = 45.0
+# normal pointing elsewhere, a corner fan folded over): the face's normal stands. Smooth shading
+# of facets folded by less than the 30-degree sharp-edge angle turns it by under 15 degrees; the
+# band's plane (edge_highlight.frag's visibility over other facets) is square to it, so it
+# must stay near the face's.
+MAX_SHADING_TURN_DEG = 20.0
 
 
 def shading_normals(d, sel, normals):

@@ -130,7 +130,9 @@ def patch_walks(polys, positions, edges, edge_polys, stop, sel, start_poly, cap)
         if not len(keep):
             break
         h = hit[keep]
-        x_exit = x[keep] + best[keep, None] * d[keep]
+        # Where it leaves, kept a hair inside the side: through a vertex exactly (a fan's centre,
+        # a row of apexes) the next polygon would be entered at its corner, heading out of it.
+        x_exit = a[h] + np.clip(s[h], 1e-4, 1.0 - 1e-4)[:, None] * w[h]
         ga = a[h]
         gu = w[h] / np.maximum(np.linalg.norm(w[h], axis=1, keepdims=True), 1e-30)
         q = other[keep]

@@ -83,6 +83,20 @@ class PatchWalks(unittest.TestCase):
         stop[edge_index(edges, 6, 7)] = True  # the fold after the third facet ends the patch
         self.assertAlmostEqual(walk(m, first, stop, 100.0), 3.0, places=6)
 
+    def test_a_walk_through_a_fans_centre_goes_on(self):
+        """A disc cut into a fan of triangles (a cylinder's cap as files store it): the walk from a
+        rim side's middle passes through the centre vertex and ends at the opposite rim side,
+        2 R cos(pi / n) away, as across the same disc as one polygon."""
+        n = 16
+        rim = [(math.cos(2 * math.pi * (k + 0.5) / n), math.sin(2 * math.pi * (k + 0.5) / n), 0.0) for k in range(n)]
+        fan = mesh(rim + [(0.0, 0.0, 0.0)], [[k, (k + 1) % n, n] for k in range(n)])
+        disc = mesh(rim, [list(range(n))])
+        want = 2.0 * math.cos(math.pi / n)
+        for m in (fan, disc):
+            positions, edges, polys, _ = m
+            stop = edge_polygons(edges, polys)[:, 1] < 0
+            self.assertAlmostEqual(walk(m, edge_index(edges, 0, 1), stop, 100.0), want, places=3)
+
     def test_across_patches_widens_only_what_is_short(self):
         (positions, edges, polys, tris), at = triangulated_plate()
         ep = edge_polygons(edges, polys)
@@ -97,9 +111,9 @@ class PatchWalks(unittest.TestCase):
 
 
 class WidthBounds(unittest.TestCase):
-    def test_a_lower_bound_exact_on_quads(self):
-        """width_bounds never exceeds widths (it looks at three corners of each polygon); on
-        quads, the first and the opposite corner, it is the width."""
+    def test_a_lower_bound_exact_on_rectangles(self):
+        """width_bounds never exceeds widths (it looks at three corners of each polygon, 0, 1
+        and 2 of a quad); on rectangles it is the width."""
         for m, exact in ((triangulated_plate()[0], False), (folded_strip(6, 10.0), True)):
             positions, edges, polys, tris = m
             ep = edge_polygons(edges, polys)

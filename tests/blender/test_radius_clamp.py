@@ -47,7 +47,7 @@ class RadiusClamp(unittest.TestCase):
 
     def test_triangulated_faces_allow_what_the_face_allows(self):
         """A fillet runs on across coplanar facets: a box whose faces are cut into triangles a
-        quarter of their width renders as the box, at a radius four times a triangle allows."""
+        quarter of their width renders as the box, at a radius 2.4 times what a triangle allows."""
         helpers.needs_gpu()
         plain = cube_with_radius(0.6)
         cut = cube_with_radius(0.6, cuts=3)
