@@ -96,6 +96,8 @@ def parse_args():
     p.add_argument("--sizes", default="640x480,1280x960")
     p.add_argument("--widths", default="1,2,4")
     p.add_argument("--methods", default="edgelight,freestyle,lineart")
+    p.add_argument("--per-type", action="store_true",
+                   help="EdgeLight: also one render per line type, for each type's stray ink (stray_<type> columns)")
     p.add_argument("--check", action="store_true",
                    help="exit 1 if an EdgeLight setting misses recall >= 98 %% or stray <= 0.2 %% (the suite's test)")
     p.add_argument("--spacing", type=float, default=0.5, help="reference sample spacing, px of the largest size")
@@ -271,6 +273,27 @@ def setup_scene():
 # ---------------------------------------------------------------------------------------------
 # Measuring
 
+def type_stray(scene, edgelight, samples, kinds):
+    """{type: stray ink fraction} from one EdgeLight render per line type (the others off): the
+    stray ink each type draws, against every visible sample (an edge may be of two types, and the
+    reference names it by one; None where the type drew no ink)."""
+    out = {}
+    enabled = {k: getattr(scene.edgelight, "line_" + k).enabled for k in KINDS}
+    try:
+        for k in KINDS:
+            for j in KINDS:
+                getattr(scene.edgelight, "line_" + j).enabled = j == k
+            edgelight.engine.last_render.clear()
+            bpy.ops.render.render()
+            ink = np.asarray(edgelight.engine.last_render["lines"])[..., 3] > INK
+            res = compare_mask(ink, samples, kinds)
+            out[k] = res["stray"] if res["ink"] else None
+    finally:
+        for k, on in enabled.items():
+            getattr(scene.edgelight, "line_" + k).enabled = on
+    return out
+
+
 def compare_mask(ink, samples, kinds):
     """line_reference.compare on an ink mask (rows bottom-up, as Blender's pixels)."""
     rgba = np.zeros(ink.shape + (4,), np.float32)
@@ -370,6 +393,7 @@ def run_mesh(name, args, scene, cam, holdout, edgelight, rows):
             for method in args.methods:
                 t = time.perf_counter()
                 png = os.path.join(args.png_dir, f"{name}_{size[0]}_{width:g}_{method}")
+                by_type = {}
                 if method == "edgelight":
                     scene.render.engine = "EDGELIGHT"
                     scene.render.use_freestyle = False
@@ -382,6 +406,7 @@ def run_mesh(name, args, scene, cam, holdout, edgelight, rows):
                     # The same camera as the reference's, only the pixel count differs.
                     assert np.allclose(np.asarray(cam_r.projection), np.asarray(rec_big["camera"].projection), atol=1e-6)
                     ink = np.asarray(rec["lines"])[..., 3] > INK
+                    by_type = type_stray(scene, edgelight, samples, kinds) if args.per_type else {}
                 elif method == "freestyle":
                     scene.render.engine = edgelight.compat.eevee_engine_id()
                     scene.render.use_freestyle = True
@@ -406,6 +431,7 @@ def run_mesh(name, args, scene, cam, holdout, edgelight, rows):
                        "mean_width": mean_width(ink, n_in, spacing), "seconds": time.perf_counter() - t}
                 for k in KINDS:
                     row[k] = res["recall"].get(k)
+                    row["stray_" + k] = by_type.get(k)
                 rows.append(row)
                 log(f"  {name} {size[0]}x{size[1]} w{width:g} {method}: " + ", ".join(
                     f"{k} {row[k] * 100:.2f}%" for k in KINDS if row[k] is not None)
@@ -424,8 +450,8 @@ def pct(v, digits=1):
 
 def write_outputs(args, rows, started):
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
-    cols = ["mesh", "triangles", "size", "width", "method", *KINDS, "stray", "stray_pixels", "ink",
-            "samples", "mean_width", "seconds"]
+    cols = ["mesh", "triangles", "size", "width", "method", *KINDS, "stray", *("stray_" + k for k in KINDS),
+            "stray_pixels", "ink", "samples", "mean_width", "seconds"]
     with open(args.out, "w") as f:
         f.write(",".join(cols) + "\n")
         for r in rows:
@@ -441,7 +467,8 @@ def write_outputs(args, rows, started):
         head += f" {labels[m]} sil / crease / border | {labels[m]} stray |"
         rule += "---|---:|"
     md = [f"Blender {bpy.app.version_string}; crease {CREASE_DEG:.0f}° between face normals; recall % per "
-          f"line type (silhouette / crease / border, – where the view has none), stray ink %; "
+          f"line type (silhouette / crease / border, – where the view has none), stray ink % (with "
+          f"--per-type, then the stray share of each type's own ink in brackets, one render per type); "
           f"{datetime.date.today().isoformat()}, {time.time() - started:.0f} s, load "
           + ", ".join(f"{x:.2f}" for x in os.getloadavg()) + ".", "", head, rule]
     for mesh in meshes:
@@ -455,7 +482,10 @@ def write_outputs(args, rows, started):
                 rec = " / ".join(("**" + pct(r[k]) + "**") if r[k] is not None and r[k] < RECALL_MIN else pct(r[k])
                                  for k in KINDS)
                 st = pct(r["stray"], 2)
-                cells += f" {rec} | {'**' + st + '**' if r['stray'] > STRAY_MAX else st} |"
+                st = '**' + st + '**' if r['stray'] > STRAY_MAX else st
+                if any(r.get("stray_" + k) is not None for k in KINDS):  # --per-type
+                    st += " (" + " / ".join(pct(r.get("stray_" + k), 2) for k in KINDS) + ")"
+                cells += f" {rec} | {st} |"
             md.append(cells)
     md.append("")
     md.append(f"Bold: below {RECALL_MIN * 100:.0f} % recall or above {STRAY_MAX * 100:.1f} % stray.")
