@@ -78,15 +78,22 @@ def open_scene(name, radius, samples, resolution):
         for mat in ob.data.materials:
             me.materials.append(mat)
         ob.data = me
+    s = edgelight_scene(resolution, samples)
+    for mat in bpy.data.materials:
+        mat.edgelight.radius = radius
+        mat.edgelight.K = 1.0
+    return s
+
+
+def edgelight_scene(resolution, samples):
+    """The open file's scene rendered by EdgeLight at `resolution` (100 %), `samples` samples and
+    the Standard view transform (errors are measured on display values)."""
     s = bpy.context.scene
     s.render.engine = "EDGELIGHT"
     s.render.resolution_x, s.render.resolution_y = resolution
     s.render.resolution_percentage = 100
     s.view_settings.view_transform = 'Standard'
     s.edgelight.samples = samples
-    for mat in bpy.data.materials:
-        mat.edgelight.radius = radius
-        mat.edgelight.K = 1.0
     return s
 
 

@@ -33,6 +33,7 @@ from mathutils import Vector
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "bench"))
 import fillets  # noqa: E402
+import gt_scenes  # noqa: E402
 
 ARGS = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 OUT = ARGS[0] if ARGS else os.path.join(ROOT, "out", "temporal_stability.csv")
@@ -52,12 +53,7 @@ def addon():
 
 def open_cube(radius):
     bpy.ops.wm.open_mainfile(filepath=os.path.join(ROOT, "blend_samples", "cube.blend"))
-    s = bpy.context.scene
-    s.render.engine = "EDGELIGHT"
-    s.render.resolution_x, s.render.resolution_y = RESOLUTION
-    s.render.resolution_percentage = 100
-    s.view_settings.view_transform = 'Standard'
-    s.edgelight.samples = SAMPLES
+    s = gt_scenes.edgelight_scene(RESOLUTION, SAMPLES)
     if radius is not None:
         for mat in bpy.data.materials:
             mat.edgelight.radius = radius
