@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import band_ends, native, radius_clamp
+from . import band_ends, corner_patches, native, radius_clamp
 from .edge_data import shading_normals
 from .lines import surface_ids
 from .radius_clamp_notes import record_radius_clamps
@@ -22,6 +22,7 @@ class EdgeSet:
     radius: np.ndarray
     faces: np.ndarray = None           # (N, 2) float32 surface ids of its two faces (band visibility)
     ends: np.ndarray = None            # (N, 4) float32 where its band ends on each face (band_ends.py)
+    corners: object = None             # corner_patches.Corners where three of its edges meet (the first's slot)
 
     def __len__(self):
         return len(self.radius)
@@ -81,6 +82,10 @@ def choose_edges(d, shading):
     # For the material panel's note (radius_clamp_notes): nothing is written to the materials.
     e = picked_edges
     record_radius_clamps(d, shading, ((slot_a[e], pick_a[e], rad_a[e]), (slot_b[e], pick_b[e], rad_b[e])), limit)
+    convex = (flags & native.EDGE_CONVEX) != 0
+    corners = corner_patches.find(edges, positions, normals, convex, chosen, radius)
+    corners.faces = surface_ids(d, np.concatenate([face_a[corners.edges], face_b[corners.edges]], axis=1))
+    corner_slot = slot_a[corners.edges[:, 0]]
     out = {}
     for slot in np.unique(slot_a[chosen]):
         sel = np.flatnonzero(chosen & (slot_a == slot))
@@ -90,5 +95,6 @@ def choose_edges(d, shading):
                                  np.ascontiguousarray(shaded[:, :3]), np.ascontiguousarray(shaded[:, 3:]),
                                  radius[sel], surface_ids(d, faces),
                                  band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen,
-                                                      ~stop, d.edge_polygons()))
+                                                      ~stop, d.edge_polygons()),
+                                 corners.subset(np.flatnonzero(corner_slot == slot)))
     return out

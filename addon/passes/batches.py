@@ -1,4 +1,5 @@
-"""GPU batches of one extracted mesh: surface triangles and edge quads, per material slot."""
+"""GPU batches of one extracted mesh: surface triangles, edge quads and corner squares, per material
+slot."""
 import gpu
 import numpy as np
 
@@ -67,6 +68,29 @@ def edge_batches(extract):
     return out
 
 
+_SQUARE = np.array([[-1, -1], [1, -1], [-1, 1], [1, 1]], dtype=np.float32)
+
+
+def corner_batches(extract):
+    """A square per corner patch (corner_patches.py), drawn by shaders/edge_corner.*."""
+    out = {}
+    for slot, e in extract.edges.items():
+        c = e.corners
+        if c is None or not len(c):
+            continue
+        n = len(c)
+        rep = lambda a: np.repeat(a, 4, axis=0)  # noqa: E731 - the corner's value at each of its four
+        corner = np.zeros((n * 4, 4), dtype=np.float32)
+        corner[:, :2] = np.tile(_SQUARE, (n, 1))
+        corner[:, 2] = rep(c.radius)
+        vbo = _vertbuf({"v": rep(c.position), "m1": rep(c.normals[:, 0]), "m2": rep(c.normals[:, 1]),
+                        "m3": rep(c.normals[:, 2]), "corner": corner, "faces_a": rep(c.faces[:, :3]),
+                        "faces_b": rep(c.faces[:, 3:])})
+        idx = (np.arange(n)[:, None] * 4 + np.array([0, 1, 3, 0, 3, 2])).astype(np.int32).reshape(-1, 3)
+        out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
+    return out
+
+
 class GpuMesh:
     """Everything the passes draw for one extracted mesh, built in the GPU context."""
 
@@ -84,6 +108,7 @@ class GpuMesh:
 
     def rebuild_edges(self):
         self.edges = edge_batches(self.extract)
+        self.corners = corner_batches(self.extract)
         self.edge_count = sum(len(e) for e in self.extract.edges.values())
 
 

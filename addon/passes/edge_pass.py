@@ -1,5 +1,6 @@
 """Edge highlight pass: one quad per rounded edge (batches.edge_batches), shaded with EdgeLight's
-method (shaders/edge_highlight.*), premultiplied into the highlight target, once per frame."""
+method (shaders/edge_highlight.*), premultiplied into the highlight target, once per frame; then
+the corner patches over them (batches.corner_batches, shaders/edge_corner.*)."""
 from . import frame_data, pass_state, shader_lib, table
 from .surface_pass import shading_uniforms
 
@@ -30,3 +31,26 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
                 shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
                 batch.draw(shader)
                 stats.edges_drawn += len(gm.extract.edges[slot])
+    draw_corners(targets, scene, gpu_meshes, ubo)
+
+
+def draw_corners(targets, scene, gpu_meshes, ubo):
+    """Each instance's corner patches into targets.highlight, over the bands' mitres."""
+    if not any(gpu_meshes[id(inst.mesh)].corners for inst in scene.instances):
+        return
+    shader = shader_lib.get("edge_corner")
+    with pass_state.drawing("edge_corner", targets.highlight_fb):
+        shader.bind()
+        shader.uniform_block("frame", ubo)
+        pass_state.bind_inputs(shader, "edge_corner", targets)
+        for index, inst in enumerate(scene.instances):
+            gm = gpu_meshes[id(inst.mesh)]
+            if not gm.corners:
+                continue
+            shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
+            shader_lib.set_uniform(shader, "instance_id", float(index + 1))
+            for slot, batch in gm.corners.items():
+                s = gm.extract.slot_shading[slot]
+                shading_uniforms(shader, s)
+                shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
+                batch.draw(shader)

@@ -8,43 +8,10 @@ import unittest
 import numpy as np
 
 from addon_modules import addon_module
-from small_meshes import mesh
+from small_meshes import box, edge_frame, mesh
 
 band_ends = addon_module("band_ends")
 radius_clamp = addon_module("radius_clamp")
-
-
-def edge_frame(positions, edges, polys, tris):
-    """Per edge: N1 / N2 (N1's face runs edges[e, 0] -> edges[e, 1]; each triangle carries its
-    polygon's normal, as the add-on gives the library) and its two triangles."""
-    n = len(edges)
-    normals = np.zeros((n, 6))
-    faces = np.full((n, 2), -1)
-    for t, (a, b, c) in enumerate(tris):
-        nrm = polys.normal[polys.tri_poly[t]]
-        for u, v in ((a, b), (b, c), (c, a)):
-            key = (min(u, v), max(u, v))
-            e = next((i for i, ed in enumerate(map(tuple, edges)) if ed == key), None)
-            if e is None:
-                continue  # a fan's diagonal
-            forward = (u, v) == (edges[e, 0], edges[e, 1])
-            normals[e, 0:3 if forward else 3] = nrm if forward else normals[e, 0:3]
-            if not forward:
-                normals[e, 3:] = nrm
-            faces[e, 0 if forward else 1] = t
-    return normals.astype(np.float32), faces
-
-
-def box(cut=False):
-    v = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]  # index 4x + 2y + z
-    top = [1, 5, 7, 3]
-    front = [0, 4, 5, 1]
-    if cut:  # a vertex halfway along the top front edge (1 -> 5)
-        v.append((0.5, 0.0, 1.0))
-        top = [1, 8, 5, 7, 3]
-        front = [0, 4, 5, 8, 1]
-    polys = [[0, 2, 6, 4], top, front, [2, 3, 7, 6], [0, 1, 3, 2], [4, 6, 7, 5]]
-    return mesh(v, polys)
 
 
 def angles(positions, edges, polys, tris, rounded):

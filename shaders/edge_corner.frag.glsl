@@ -1,0 +1,117 @@
+/* Corner patch pass (docs/highlight_math.md, "Corner patches"): the pixel's view rays meet the
+ * ball that rounds the corner; where the front hit's normal lies between the three faces'
+ * normals, that point is the filleted corner's surface (the ball lies inside the filleted solid,
+ * which is convex there, so its front point is the solid's), shaded as the surface pass shades a
+ * point and tinted as the bands are. Four sub-samples a pixel give the patch's coverage, so its
+ * rim blends with the bands under it. Output is premultiplied (W Is, W), over the bands. */
+
+/* Colour of the surface at world point X with unit normal N seen along unit V: the surface
+ * pass's Blinn-Phong, the specular tinted as the bands' (edge_shading.glsl). */
+vec3 el_corner_colour(vec3 X, vec3 N, vec3 V)
+{
+  float n = spec_color.w;
+  vec3 col = frame.ambient.rgb * base_color.rgb;
+  int count = int(frame.camera.y + 0.5);
+  for (int i = 0; i < count; i++) {
+    vec3 L, E;
+    light_at(i, X, L, E);
+    float nl = dot(N, L);
+    if (nl <= 0.0) {
+      continue;
+    }
+    vec3 H = normalize(L + V);
+    col += E * (base_color.rgb * (nl / 3.14159265) +
+                tint.rgb * spec_color.rgb * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
+  }
+  return col;
+}
+
+/* Ray from Q along unit D against the ball: the front hit's unit normal, or zero for a miss. */
+vec3 el_ball_normal(vec3 Q, vec3 D, out vec3 hit)
+{
+  vec3 m = Q - corner_centre;
+  float b = dot(m, D);
+  float disc = b * b - (dot(m, m) - corner_radius * corner_radius);
+  hit = Q;
+  if (!(disc >= 0.0)) {
+    return vec3(0.0);
+  }
+  hit = Q + (-b - sqrt(disc)) * D;
+  return (hit - corner_centre) / corner_radius;
+}
+
+/* Whether unit normal N lies in the spherical triangle of the three faces' normals. */
+bool el_in_corner(vec3 N)
+{
+  float s = dot(corner_n1, cross(corner_n2, corner_n3)) < 0.0 ? -1.0 : 1.0;
+  return s * dot(N, cross(corner_n1, corner_n2)) >= 0.0 && s * dot(N, cross(corner_n2, corner_n3)) >= 0.0 &&
+         s * dot(N, cross(corner_n3, corner_n1)) >= 0.0;
+}
+
+void main()
+{
+  vec2 pc = gl_FragCoord.xy;
+  bool persp = frame.eye.w > 0.5;
+  vec3 Q = corner_point;
+  vec3 D = persp ? normalize(Q - frame.eye.xyz) : frame.view_dir.xyz;
+  float dist = persp ? length(corner_centre - frame.eye.xyz) : 1.0;
+  float world_per_px = dist / frame.camera.x;
+
+  /* Visibility, as the bands': over one of the corner's own faces it shows; over the
+   * background only in the outline's own pixels; elsewhere no surface may lie nearer than the
+   * sharp corner's along this ray (its faces' planes through the vertex: the ray enters the
+   * corner where it crosses the last of the planes it enters by) less half a pixel's footprint. */
+  vec2 id = texelFetch(surface_id, ivec2(pc), 0).rg;
+  bool own = id.x == instance_id && id.y > 0.0 &&
+             (any(equal(vec3(id.y), corner_faces_a)) || any(equal(vec3(id.y), corner_faces_b)));
+  if (!(id.y > 0.0)) {
+    ivec2 size = textureSize(surface_id, 0) - 1;
+    bool fringe = false;
+    for (int dy = -1; dy <= 1; dy++) {
+      for (int dx = -1; dx <= 1; dx++) {
+        vec2 n = texelFetch(surface_id, clamp(ivec2(pc) + ivec2(dx, dy), ivec2(0), size), 0).rg;
+        fringe = fringe || (n.x == instance_id && n.y > 0.0);
+      }
+    }
+    if (!fringe) {
+      discard;
+    }
+  }
+  else if (!own) {
+    float t = -3.0e38;
+    vec3 ns[3] = vec3[3](corner_n1, corner_n2, corner_n3);
+    for (int k = 0; k < 3; k++) {
+      float dn = dot(D, ns[k]);
+      if (dn < 0.0) {
+        t = max(t, dot(corner_vertex - Q, ns[k]) / dn);
+      }
+    }
+    float inv_surface = texelFetch(surface_depth, ivec2(pc), 0).r;
+    float corner_depth = -(frame.view * vec4(Q + max(t, -1.0e30) * D, 1.0)).z;
+    if (inv_surface > 0.0 && corner_depth > 1.0 / inv_surface + 0.5 * world_per_px + 1e-5 * dist) {
+      discard;
+    }
+  }
+
+  /* Four sub-samples on a rotated grid over the pixel's footprint on the plane through the
+   * centre. */
+  vec3 dx = dFdx(Q), dy = dFdy(Q);
+  const vec2 offs[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125), vec2(0.125, 0.375), vec2(-0.375, 0.125));
+  vec3 sum = vec3(0.0);
+  float covered = 0.0;
+  for (int k = 0; k < 4; k++) {
+    vec3 q = Q + offs[k].x * dx + offs[k].y * dy;
+    vec3 d = persp ? normalize(q - frame.eye.xyz) : D;
+    vec3 hit;
+    vec3 N = el_ball_normal(q, d, hit);
+    if (dot(N, N) > 0.5 && el_in_corner(N)) {
+      sum += el_corner_colour(hit, N, -d);
+      covered += 0.25;
+    }
+  }
+  float W = clamp(tint.w, 0.0, 1.0) * covered;
+  if (!(W > 0.0)) {
+    discard;
+  }
+  out_color = vec4(sum / (4.0 * covered) * W, W);
+}

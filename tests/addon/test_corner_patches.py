@@ -1,0 +1,83 @@
+"""Where corner patches go (addon/corner_patches.py), on meshes small enough to know the answer:
+a box with every edge rounded (eight corners, the ball r under each face), the same box with a
+top edge cut by a collinear vertex (that vertex is no corner), a box whose vertical edges are
+not rounded (no corner), a box whose top face is a fan of triangles (still eight corners: the
+sectors are sides of one face), and a needle-sharp pyramid tip (no corner: the ball would sit
+far from the vertex).
+
+    /usr/bin/python3 tests/addon/test_corner_patches.py
+"""
+import unittest
+
+import numpy as np
+
+from addon_modules import addon_module
+from small_meshes import box, edge_frame, mesh
+
+corner_patches = addon_module("corner_patches")
+
+
+def corners(positions, edges, polys, tris, rounded, radius=0.1):
+    normals, _ = edge_frame(positions, edges, polys, tris)
+    e = positions[edges[:, 1]] - positions[edges[:, 0]]
+    convex = np.einsum("ek,ek->e", np.cross(normals[:, :3], normals[:, 3:]), e) > 0.0
+    return corner_patches.find(edges, positions, normals, convex, rounded, np.full(len(edges), radius, np.float32))
+
+
+class CornerPatches(unittest.TestCase):
+    def test_box_corners(self):
+        positions, edges, polys, tris = box()
+        c = corners(positions, edges, polys, tris, np.ones(len(edges), bool))
+        self.assertEqual(sorted(c.vertex), list(range(8)))
+        # The ball's centre is r in from each of the three faces: the vertex moved 0.1 inwards
+        # along every axis.
+        inward = np.where(positions[c.vertex] > 0.5, -0.1, 0.1)
+        np.testing.assert_allclose(c.centre, positions[c.vertex] + inward, atol=1e-6)
+        np.testing.assert_allclose(np.abs(np.linalg.det(c.normals)), 1.0, atol=1e-6)
+        np.testing.assert_allclose(c.radius, 0.1)
+
+    def test_smallest_radius(self):
+        positions, edges, polys, tris = box()
+        normals, _ = edge_frame(positions, edges, polys, tris)
+        radius = np.full(len(edges), 0.1, np.float32)
+        at_origin = np.flatnonzero((edges == 0).any(axis=1))
+        radius[at_origin[0]] = 0.05
+        c = corner_patches.find(edges, positions, normals, np.ones(len(edges), bool), np.ones(len(edges), bool), radius)
+        k = list(c.vertex).index(0)
+        self.assertAlmostEqual(float(c.radius[k]), 0.05)
+        np.testing.assert_allclose(c.centre[k], [0.05, 0.05, 0.05], atol=1e-6)
+
+    def test_collinear_vertex_is_no_corner(self):
+        positions, edges, polys, tris = box(cut=True)
+        c = corners(positions, edges, polys, tris, np.ones(len(edges), bool))
+        self.assertEqual(sorted(c.vertex), list(range(8)))
+
+    def test_unrounded_sides_leave_no_corner(self):
+        positions, edges, polys, tris = box()
+        vertical = positions[edges[:, 0], 2] != positions[edges[:, 1], 2]
+        c = corners(positions, edges, polys, tris, ~vertical)
+        self.assertEqual(len(c), 0)
+
+    def test_triangulated_face(self):
+        # The top face (z = 1) as four triangles round a centre vertex: its diagonals are
+        # edges now, flat, not rounded; each top corner's sector is two triangles of one plane.
+        v = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)] + [(0.5, 0.5, 1.0)]
+        ring = [1, 5, 7, 3]
+        top = [[ring[i], ring[(i + 1) % 4], 8] for i in range(4)]
+        polys_ = [[0, 2, 6, 4], [0, 4, 5, 1], [2, 3, 7, 6], [0, 1, 3, 2], [4, 6, 7, 5]] + top
+        positions, edges, polys, tris = mesh(v, polys_)
+        rounded = ~(edges == 8).any(axis=1)
+        c = corners(positions, edges, polys, tris, rounded)
+        self.assertEqual(sorted(c.vertex), list(range(8)))
+
+    def test_needle_tip_is_no_corner(self):
+        # A three-sided pyramid 20 times taller than wide: its tip's ball would sit ~20 r down.
+        v = [(0, 0, 0), (1, 0, 0), (0.5, 0.87, 0), (0.5, 0.29, 20.0)]
+        positions, edges, polys, tris = mesh(v, [[0, 2, 1], [0, 1, 3], [1, 2, 3], [2, 0, 3]])
+        c = corners(positions, edges, polys, tris, np.ones(len(edges), bool))
+        self.assertNotIn(3, list(c.vertex))
+        self.assertEqual(sorted(c.vertex), [0, 1, 2])
+
+
+if __name__ == "__main__":
+    unittest.main()
