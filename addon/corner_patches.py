@@ -24,10 +24,15 @@ MIN_DET = 0.05
 # patch would lie far from where its fillets end.
 MAX_REACH = 4.0
 
-# Which side of each of the corner's edges A, B, C faces which sector, for each of the eight
-# choices (sA, sB, sC): sector AB is A[sA] and B[1 - sB], BC is B[sB] and C[1 - sC], CA is
-# C[sC] and A[1 - sA].
+# Which side of each of the corner's edges A, B, C faces the next edge round (A: towards B, B:
+# towards C, C: towards A), for each of the eight choices (sA, sB, sC).
 _CHOICES = np.array([[a, b, c] for a in (0, 1) for b in (0, 1) for c in (0, 1)])
+
+
+def _cross(u, v):
+    """Row-wise cross products (np.cross is several times slower on (K, 3) arrays)."""
+    return np.stack([u[:, 1] * v[:, 2] - u[:, 2] * v[:, 1], u[:, 2] * v[:, 0] - u[:, 0] * v[:, 2],
+                     u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]], axis=1)
 
 
 @dataclass
@@ -65,33 +70,30 @@ def find(edges, positions, normals, convex, chosen, radius):
     inc_v, inc_e = inc_v[keep], inc_e[keep]
     order = np.argsort(inc_v, kind="stable")
     verts, trio = inc_v[order][::3], inc_e[order].reshape(-1, 3)
-    n = normals[trio].astype(np.float64).reshape(-1, 3, 2, 3)  # (K, edge, side, xyz)
+    n = normals[trio].reshape(-1, 3, 2, 3)  # (K, edge, side, xyz)
     k = np.arange(len(trio))
-
-    def sector_pairs(ch):
-        sa, sb, sc = ch
-        return ((0, sa, 1, 1 - sb), (1, sb, 2, 1 - sc), (2, sc, 0, 1 - sa))
-
-    best_cos = np.full(len(trio), -2.0)
-    best = np.zeros(len(trio), np.int64)
-    for i, ch in enumerate(_CHOICES):
-        cos = np.min([np.einsum("kx,kx->k", n[:, e0, s0], n[:, e1, s1]) for e0, s0, e1, s1 in sector_pairs(ch)], axis=0)
-        better = cos > best_cos
-        best_cos[better], best[better] = cos[better], i
-    sides = np.zeros((len(trio), 3, 2, 2), np.int64)
-    for i, ch in enumerate(_CHOICES):
-        rows = best == i
-        for s, (e0, s0, e1, s1) in enumerate(sector_pairs(ch)):
-            sides[rows, s] = [[e0, s0], [e1, s1]]
-    sector = n[k[:, None], sides[:, :, 0, 0], sides[:, :, 0, 1]] + n[k[:, None], sides[:, :, 1, 0], sides[:, :, 1, 1]]
-    sector /= np.maximum(np.linalg.norm(sector, axis=2, keepdims=True), 1e-30)
-    det = np.linalg.det(sector) if len(trio) else np.zeros(0)
-    r = radius[trio].astype(np.float64).min(axis=1)
+    # cos[:, j, p, q]: side p of edge j against side q of the next edge round (A-B, B-C, C-A).
+    nxt = n[:, [1, 2, 0]]
+    cos = (n[:, :, :, None, :] * nxt[:, :, None, :, :]).sum(axis=4)
+    sa, sb, sc = _CHOICES.T
+    # Each choice's worst sector: AB is A[sA] with B[1 - sB], BC is B[sB] with C[1 - sC], CA is
+    # C[sC] with A[1 - sA].
+    score = np.minimum(np.minimum(cos[:, 0, sa, 1 - sb], cos[:, 1, sb, 1 - sc]), cos[:, 2, sc, 1 - sa])
+    best = np.argmax(score, axis=1)
+    best_cos = score[k, best]
+    s_own = _CHOICES[best]                                   # (K, 3): edge j's side toward edge j + 1
+    s_next = 1 - s_own[:, [1, 2, 0]]                         # edge j + 1's side toward edge j
+    pick = lambda a, side: np.take_along_axis(a, side[:, :, None, None], axis=2)[:, :, 0]  # noqa: E731
+    sector = pick(n, s_own) + pick(nxt, s_next)
+    sector /= np.maximum(np.sqrt((sector * sector).sum(axis=2, keepdims=True)), 1e-30)
+    a, b, c = sector[:, 0], sector[:, 1], sector[:, 2]
+    bc, ca, ab = _cross(b, c), _cross(c, a), _cross(a, b)
+    det = (a * bc).sum(axis=1)
+    r = radius[trio].min(axis=1)
     ok = (best_cos >= np.cos(np.radians(SECTOR_TURN_DEG))) & (np.abs(det) > MIN_DET) & (r > 0.0)
-    # The ball touches each sector's plane from inside: N (c - v) = -r (1, 1, 1).
-    offset = np.zeros((len(trio), 3))
-    if np.any(ok):
-        offset[ok] = np.linalg.solve(sector[ok], -r[ok, None] * np.ones((1, 3)))
-    ok &= np.linalg.norm(offset, axis=1) <= MAX_REACH * r
+    # The ball touches each sector's plane from inside: N (c - v) = -r (1, 1, 1), by Cramer's rule
+    # (the rows' cross products are the inverse's columns times det).
+    offset = -r[:, None] * (bc + ca + ab) / np.where(ok, det, 1.0)[:, None]
+    ok &= (offset * offset).sum(axis=1) <= (MAX_REACH * r) ** 2
     return Corners(verts[ok], positions[verts[ok]].astype(np.float32), trio[ok], sector[ok].astype(np.float32), r[ok].astype(np.float32),
                    (positions[verts[ok]].astype(np.float64) + offset[ok]).astype(np.float32))

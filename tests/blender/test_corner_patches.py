@@ -32,14 +32,16 @@ def radius_for(width_px):
     return width_px * float(np.linalg.norm(CAMERA)) / (50.0 / 36.0 * RESOLUTION[0])
 
 
-def box_scene(radius, segments=0, highlights=True):
-    """A 2 m box, every edge rounded at `radius`, lit so that its front corner catches the glint."""
+def box_scene(radius, segments=0, highlights=True, scale=(1.0, 1.0, 1.0)):
+    """A 2 m box, every edge rounded at `radius`, lit so that its front corner catches the glint;
+    `scale`, the object's (uniform in size), with the mesh and the material's radius in its units."""
     helpers.empty_scene(*RESOLUTION, samples=16 if segments else 4)
     helpers.add_camera(CAMERA)
     helpers.add_sun((0.45, -0.75, 0.6), 4.0)
     bm = bmesh.new()
-    bmesh.ops.create_cube(bm, size=2.0)
-    zoo.rounded_part("Box", bm, (0.6, 0.6, 0.6), radius)
+    bmesh.ops.create_cube(bm, size=2.0 / abs(scale[0]))
+    ob = zoo.rounded_part("Box", bm, (0.6, 0.6, 0.6), radius / abs(scale[0]))
+    ob.scale = scale
     scene = bpy.context.scene
     scene.view_settings.view_transform = 'Standard'
     scene.edgelight.highlights = highlights
@@ -71,6 +73,21 @@ class CornerPatches(unittest.TestCase):
             self.assertGreater(rmse["off"], 0.03, "the fillets change the corner's image")
             self.assertLess(rmse["ours"], 0.005, f"{width} px")
             self.assertLess(rmse["ours"], 0.2 * rmse["off"], f"{width} px")
+
+    def test_mirrored_and_scaled_box(self):
+        """The box mirrored by its object's scale (-1 along x), and modelled in millimetres or
+        kilometres at object scale 1000 or 1/1000 (the radius is in the object's units, as the
+        mesh): the same image, corner and all, as the plain box (a mirroring model turns the
+        faces' normals; the ball's centre and its triangle of normals are found in world space)."""
+        images = {}
+        for name, scale in (("plain", (1.0, 1.0, 1.0)), ("mirrored", (-1.0, 1.0, 1.0)),
+                            ("millimetres", (1e3, 1e3, 1e3)), ("kilometres", (1e-3, 1e-3, 1e-3))):
+            box_scene(radius_for(8.0), scale=scale)
+            images[name] = window(helpers.render(), CORNER, 20)
+        for name in ("mirrored", "millimetres", "kilometres"):
+            diff = float(np.abs(images["plain"] - images[name]).max())
+            print(f"{name} box: largest difference at the corner {diff:.4f}")
+            self.assertLess(diff, 2.0 / 255.0, name)
 
     def test_hidden_corner_stays_hidden(self):
         """A plate between the camera and the front corner: the corner's patch is behind it, so
