@@ -138,6 +138,49 @@ class BandEnds(unittest.TestCase):
             self.assertLess(abs(lum[0] - lum[1]), 0.08 * lum[1])
 
 
+class FilletReference(unittest.TestCase):
+    """The reference itself (bench/fillets.py): every fillet meets its faces r tan(a / 2) from
+    the edge, also where triangulated faces put diagonals at the fillet's ends (CAD meshes:
+    joint, anchor). With the Bevel modifier's loop slide on, those diagonals pulled a 90-degree
+    fillet's setbacks to about 0.58 r and 0.39 r, and EdgeLight's concave bands were scored
+    against half-size fillets."""
+
+    def test_setback_on_triangulated_faces(self):
+        """The step (bench/parts.py) with every face triangulated: the concave edge's fillet meets
+        both faces r from the edge at 10, 50 and 90 % along it (cross-sections of the modifier's
+        mesh)."""
+        helpers.empty_scene(*RESOLUTION)
+        bm = parts.l_step()
+        bmesh.ops.triangulate(bm, faces=bm.faces[:])
+        bm.normal_update()
+        concave = [e for e in bm.edges if len(e.link_faces) == 2 and not e.is_convex and e.calc_face_angle(0.0) > 0.5]
+        self.assertEqual(len(concave), 1)
+        e = concave[0]
+        p0, p1 = (np.array(v.co[:]) for v in e.verts)
+        planes = [(np.array(f.normal[:]), np.array(f.verts[0].co[:])) for f in e.link_faces]
+        radius = 0.1
+        ob = zoo.rounded_part("Step", bm, (0.6, 0.6, 0.6), radius)
+        fillets.add_fillets(bpy.context.scene, radius, 8)
+        evaluated = ob.evaluated_get(bpy.context.evaluated_depsgraph_get())
+        me = evaluated.to_mesh()
+        co = np.array([v.co[:] for v in me.vertices])
+        ends = np.array([ed.vertices[:] for ed in me.edges])
+        evaluated.to_mesh_clear()
+        axis = (p1 - p0) / np.linalg.norm(p1 - p0)
+        for frac in (0.1, 0.5, 0.9):
+            # The modifier's mesh cut square to the edge: where its edges cross that plane.
+            s0, s1 = ((co[ends[:, k]] - p0) @ axis - frac * np.linalg.norm(p1 - p0) for k in (0, 1))
+            cross = s0 * s1 < 0.0
+            w = (s0[cross] / (s0[cross] - s1[cross]))[:, None]
+            pts = co[ends[cross, 0]] * (1.0 - w) + co[ends[cross, 1]] * w
+            off_line = (pts - p0) - np.outer((pts - p0) @ axis, axis)
+            for n, q in planes:
+                on = np.abs((pts - q) @ n) < 1e-5
+                setback = float(np.linalg.norm(off_line[on], axis=1).min())
+                print(f"{frac:.0%} along: the fillet meets the face with normal {np.round(n, 3)} {setback / radius:.4f} r from the edge")
+                self.assertAlmostEqual(setback / radius, 1.0, delta=1e-3)
+
+
 class CoincidentVertices(unittest.TestCase):
     def test_cow_keeps_its_bands_on_itself(self):
         """cow.off has two vertices at one position (not welded: a pinch where two fans touch).
