@@ -2,8 +2,11 @@
  * ball that rounds the corner; where the front hit's normal lies between the three faces'
  * normals, that point is the filleted corner's surface (the ball lies inside the filleted solid,
  * which is convex there, so its front point is the solid's), shaded as the surface pass shades a
- * point and tinted as the bands are. Four sub-samples a pixel give the patch's coverage, so its
- * rim blends with the bands under it. Output is premultiplied (W Is, W), over the bands. */
+ * point and tinted as the bands are. Four sub-samples a pixel give the patch's coverage c. The
+ * patch replaces what the bands put under it over that fraction, at the material's weight K: two
+ * draws, the first (EL_CORNER_COVER) scaling the target by 1 - c (MULTIPLY blending), the second
+ * adding the premultiplied (K c Is, K c). Blending it over the bands instead left them showing
+ * through by 1 - K: a bright disc at K < 1. */
 
 /* Colour of the surface at world point X with unit normal N seen along unit V: the surface
  * pass's Blinn-Phong, the specular tinted as the bands' (edge_shading.glsl). */
@@ -109,9 +112,13 @@ void main()
       covered += 0.25;
     }
   }
-  float W = clamp(tint.w, 0.0, 1.0) * covered;
-  if (!(W > 0.0)) {
+  if (!(covered > 0.0)) {
     discard;
   }
+#ifdef EL_CORNER_COVER
+  out_color = vec4(1.0 - covered);
+#else
+  float W = clamp(tint.w, 0.0, 1.0) * covered;
   out_color = vec4(sum / (4.0 * covered) * W, W);
+#endif
 }

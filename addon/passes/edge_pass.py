@@ -35,22 +35,24 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
 
 
 def draw_corners(targets, scene, gpu_meshes, ubo):
-    """Each instance's corner patches into targets.highlight, over the bands' mitres."""
+    """Each instance's corner patches into targets.highlight, replacing the bands' mitres under
+    them: the target scaled by 1 - each patch's coverage, then the patches added."""
     if not any(gpu_meshes[id(inst.mesh)].corners for inst in scene.instances):
         return
-    shader = shader_lib.get("edge_corner")
-    with pass_state.drawing("edge_corner", targets.highlight_fb):
-        shader.bind()
-        shader.uniform_block("frame", ubo)
-        pass_state.bind_inputs(shader, "edge_corner", targets)
-        for index, inst in enumerate(scene.instances):
-            gm = gpu_meshes[id(inst.mesh)]
-            if not gm.corners:
-                continue
-            shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
-            shader_lib.set_uniform(shader, "instance_id", float(index + 1))
-            for slot, batch in gm.corners.items():
-                s = gm.extract.slot_shading[slot]
-                shading_uniforms(shader, s)
-                shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
-                batch.draw(shader)
+    for pass_name, defines in (("edge_corner_cover", {"EL_CORNER_COVER": 1}), ("edge_corner", None)):
+        shader = shader_lib.get("edge_corner", defines)
+        with pass_state.drawing(pass_name, targets.highlight_fb):
+            shader.bind()
+            shader.uniform_block("frame", ubo)
+            pass_state.bind_inputs(shader, pass_name, targets)
+            for index, inst in enumerate(scene.instances):
+                gm = gpu_meshes[id(inst.mesh)]
+                if not gm.corners:
+                    continue
+                shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
+                shader_lib.set_uniform(shader, "instance_id", float(index + 1))
+                for slot, batch in gm.corners.items():
+                    s = gm.extract.slot_shading[slot]
+                    shading_uniforms(shader, s)
+                    shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
+                    batch.draw(shader)

@@ -37,7 +37,8 @@ struct BlendFactors {
 };
 const std::map<std::string, BlendFactors> kBlends = {
     {"ALPHA_PREMULT", {GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA}},
-    {"ADDITIVE_PREMULT", {GL_ONE, GL_ONE, GL_ONE, GL_ONE}}};
+    {"ADDITIVE_PREMULT", {GL_ONE, GL_ONE, GL_ONE, GL_ONE}},
+    {"MULTIPLY", {GL_DST_COLOR, GL_ZERO, GL_DST_ALPHA, GL_ZERO}}};
 
 std::map<std::string, std::string> string_map(const json& j) {
     std::map<std::string, std::string> out;

@@ -15,7 +15,7 @@ native = addon_module("native")  # imports no bpy; the library is not loaded
 # Blender's names that edgelight-render maps (native/tools/pass_state.cpp).
 FORMATS = {"RGBA32F", "RG32F", "R32F", "DEPTH_COMPONENT32F"}
 DEPTH_TESTS = {"NONE", "ALWAYS", "LESS", "LESS_EQUAL", "EQUAL", "GREATER", "GREATER_EQUAL"}
-BLENDS = {"NONE", "ALPHA_PREMULT", "ADDITIVE_PREMULT"}
+BLENDS = {"NONE", "ALPHA_PREMULT", "ADDITIVE_PREMULT", "MULTIPLY"}
 FACE_CULLING = {"NONE", "BACK"}
 
 
