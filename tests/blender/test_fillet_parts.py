@@ -114,16 +114,21 @@ class BandEnds(unittest.TestCase):
             self.assertLess(weight, 0.5, name)
 
     def test_box_corner_bands_mitre(self):
-        """Three rounded edges at a box corner: the top face's two bands end on the corner's
-        diagonal, where two fillets meet. Points of the top face 0.3 r from one edge and 0.8 r
-        from the other lie on the nearer edge's fillet, so they show that band as it is halfway
-        along its edge; square ends left both bands there, the one drawn last on top."""
+        """Two rounded edges at a corner of a box's top face (its vertical edges are left sharp,
+        so no ball rounds the corner: docs/highlight_math.md, "Corner patches"): the two bands
+        end on the corner's diagonal, where two fillets meet. Points of the top face 0.3 r from
+        one edge and 0.8 r from the other lie on the nearer edge's fillet, so they show that
+        band as it is halfway along its edge; square ends left both bands there, the one drawn
+        last on top."""
         bm = bmesh.new()
         bmesh.ops.create_cube(bm, size=2.0)
+        for e in bm.edges:
+            e.smooth = abs(e.verts[0].co.z - e.verts[1].co.z) > 1e-6  # the horizontal edges sharp
         helpers.empty_scene(*RESOLUTION)
         helpers.add_camera((4.0, -5.0, 6.0))
         helpers.add_sun((0.0, 0.0, 1.0), 4.0)
         ob = zoo.rounded_part("Box", bm, (0.6, 0.6, 0.6), radius_for(8.0, (4.0, -5.0, 6.0)))
+        ob.data.materials[0].edgelight.selection = {'SHARP'}
         rec = helpers.render()
         hl = np.asarray(rec["highlight"])
         r = ob.data.materials[0].edgelight.radius
@@ -134,8 +139,9 @@ class BandEnds(unittest.TestCase):
             self.assertGreater(c_corner[3], 0.5)
             lum = [float(helpers.luminance(c[:3] / c[3])) for c in (c_corner, c_mid)]
             print(f"band at {np.round(near_corner, 3)}: {lum[0]:.4f}, halfway along its edge {lum[1]:.4f}")
-            # The view turns between the two points: measured 4.6 % apart on the same band.
-            self.assertLess(abs(lum[0] - lum[1]), 0.08 * lum[1])
+            # The view turns between the two points: measured 4.6 % (Blender 3.4) and 7.6 % (5.0)
+            # apart on the same band; 24 % and 30 % with square ends.
+            self.assertLess(abs(lum[0] - lum[1]), 0.1 * lum[1])
 
 
 class FilletReference(unittest.TestCase):
