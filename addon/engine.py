@@ -11,7 +11,7 @@ import bpy
 import gpu
 import numpy as np
 
-from . import compat, lines, native, render_passes, scene_sync, svg_output, viewport
+from . import compat, lines, native, render_cache, render_passes, scene_sync, svg_output, viewport
 from .passes import frame, toon
 
 # Tests set `capture = True` to receive the last render's record (pixels, pass buffers, camera,
@@ -213,7 +213,11 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         toon.forget_images()  # an image may have been painted since the last render
         settings = depsgraph.scene.edgelight
         line_settings = lines.settings_of(settings)
-        data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings)
+        # Extractions are kept for the next render (render_cache.py): a frame of an animation
+        # whose meshes did not change reuses them.
+        scene = depsgraph.scene
+        render_cache.EXTRACTS.begin((scene.name, scene.frame_current, scene.frame_subframe))
+        data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings, cache=render_cache.EXTRACTS)
         if len(data.lights) > frame.MAX_LIGHTS:
             data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
         for line in data.reports:
@@ -247,9 +251,19 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         return pixels
 
 
+@bpy.app.handlers.persistent
+def _forget_extractions(*_args):
+    """Another file: nothing of the last one's meshes is kept (render_cache.py)."""
+    render_cache.EXTRACTS.clear()
+
+
 def register():
     bpy.utils.register_class(EdgeLightRenderEngine)
+    bpy.app.handlers.load_post.append(_forget_extractions)
 
 
 def unregister():
+    while _forget_extractions in bpy.app.handlers.load_post:
+        bpy.app.handlers.load_post.remove(_forget_extractions)
+    render_cache.EXTRACTS.clear()
     bpy.utils.unregister_class(EdgeLightRenderEngine)

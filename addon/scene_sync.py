@@ -3,13 +3,14 @@
 Reads with foreach_get into numpy; hands topology to the native library for classification.
 Never draws, never modifies the user's data (evaluated meshes are temporary copies).
 """
+import dataclasses
 import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import compat, native, radius_clamp
-from .edge_choice import choose_edges
+from . import compat, native, radius_clamp, render_cache
+from .edge_choice import choose_edges, same_edges
 from .edge_data import EdgeData, first_two_faces
 from .lines import static_lines
 from .materials import shading_of
@@ -118,8 +119,10 @@ def polygon_unit_normals(mesh, positions):
     return np.where(ok, n / np.where(ok, length, 1.0), 0.0).astype(np.float32)
 
 
-def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
-    """Arrays and chosen edges of an evaluated mesh. Raises SkipObject with a reason."""
+def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None):
+    """Arrays and chosen edges of an evaluated mesh. Raises SkipObject with a reason. With
+    `cache` (render_cache.ExtractCache), an extraction of the same object with the same content
+    is reused: its shading and lines set afresh, nothing classified again."""
     mesh.calc_loop_triangles()
     tri_count = len(mesh.loop_triangles)
     if tri_count == 0:
@@ -138,8 +141,23 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     # Each triangle classifies by its polygon's normal: a sliver's own normal is noise, and a
     # zero-area piece along a polygon's side (collinear corners) would drop that side's edge.
     tri_poly = _foreach(mesh.loop_triangles, "polygon_index", np.int64)
-    poly_normals = polygon_unit_normals(mesh, positions)
-    tri_normals = poly_normals[tri_poly]
+    polygons = radius_clamp.Polygons(_foreach(mesh.polygons, "loop_start", np.int64),
+                                     _foreach(mesh.polygons, "loop_total", np.int64),
+                                     _foreach(mesh.loops, "vertex_index", np.int64), tri_poly,
+                                     _foreach(mesh.loops, "edge_index", np.int64), None)
+    corner_nor = compat.corner_normals(mesh)[tri_loops.reshape(-1)]
+    shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
+    key = digest = None
+    if cache is not None:
+        key = (name, tuple(m.name_full if m else "" for m in materials), id(lib))
+        digest = render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot, marks, bevel,
+                                           tri_poly, polygons.start, polygons.total, polygons.loop_vert,
+                                           polygons.loop_edge, corner_nor))
+        kept = cache.get(key, digest)
+        if kept is not None:
+            return _reused(kept, shading, line_settings)
+    polygons.normal = polygon_unit_normals(mesh, positions)
+    tri_normals = polygons.normal[tri_poly]
     try:
         m = native.Mesh(positions, tri_verts, edges=edges, triangle_edges=tri_edges, edge_marks=marks,
                         bevel_weights=bevel, triangle_materials=tri_slot.astype(np.uint32),
@@ -147,8 +165,6 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     except native.NativeError as e:
         raise SkipObject(f"{name}: {e.message}") from None
     info = m.info()
-    corner_nor = compat.corner_normals(mesh)[tri_loops.reshape(-1)]
-    shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
     order = np.argsort(tri_slot, kind="stable")
     slot_triangles = {int(s): order[tri_slot[order] == s] for s in np.unique(tri_slot)}
     out = MeshExtract(name, positions[tri_verts.reshape(-1)], np.ascontiguousarray(corner_nor, np.float32),
@@ -158,10 +174,6 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
     # plus its place in the batch, since the slots' batches are drawn in this order.
     surface_id = np.empty(tri_count, np.uint32)
     surface_id[order] = np.arange(1, tri_count + 1, dtype=np.uint32)
-    polygons = radius_clamp.Polygons(_foreach(mesh.polygons, "loop_start", np.int64),
-                                     _foreach(mesh.polygons, "loop_total", np.int64),
-                                     _foreach(mesh.loops, "vertex_index", np.int64), tri_poly,
-                                     _foreach(mesh.loops, "edge_index", np.int64), poly_normals)
     # Smooth contours exist only where the surface is shaded smooth: a flat face has one normal.
     nor = out.corner_nor.reshape(-1, 3, 3)
     out.smooth_faces = np.any(np.einsum("tck,tk->tc", nor, tri_normals) < 1.0 - 1e-5, axis=1)
@@ -177,6 +189,20 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None):
                                f"and silhouettes only, the mesh is unchanged)")
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
+    if cache is not None:
+        cache.put(key, digest, out)
+    return out
+
+
+def _reused(kept, shading, line_settings):
+    """A kept extraction with this render's shading and lines, as a copy (the kept one stays as
+    it was): edges chosen again only where the shading changed, no per-view state."""
+    edges = kept.edges
+    if shading != kept.slot_shading:
+        chosen = choose_edges(kept.edge_data, shading)
+        edges = kept.edges if same_edges(chosen, kept.edges) else chosen
+    out = dataclasses.replace(kept, slot_shading=shading, edges=edges, views={})
+    out.update_lines(line_settings)
     return out
 
 
@@ -283,7 +309,7 @@ def walk_instances(depsgraph, lookup):
     return instances, lights, not_drawn
 
 
-def read_object(ob, label, materials, lib=None, line_settings=None):
+def read_object(ob, label, materials, lib=None, line_settings=None, cache=None):
     """The extraction of one evaluated object (raises SkipObject), or None when it has no
     geometry at all (a Geometry Nodes host whose output is only instances)."""
     mesh = None
@@ -291,14 +317,15 @@ def read_object(ob, label, materials, lib=None, line_settings=None):
         mesh = ob.to_mesh()
         if mesh is None or len(mesh.vertices) == 0:
             return None
-        return extract_mesh(label, mesh, materials, lib=lib, line_settings=line_settings)
+        return extract_mesh(label, mesh, materials, lib=lib, line_settings=line_settings, cache=cache)
     finally:
         if mesh is not None:
             ob.to_mesh_clear()
 
 
-def collect(depsgraph, lib=None, line_settings=None):
-    """Everything visible in the evaluated scene. Objects that fail are reported and skipped."""
+def collect(depsgraph, lib=None, line_settings=None, cache=None):
+    """Everything visible in the evaluated scene. Objects that fail are reported and skipped.
+    `cache`: a render_cache.ExtractCache that extractions are kept in and reused from."""
     reports, extracted = [], {}
 
     def lookup(key, ob, inst, materials):
@@ -306,7 +333,7 @@ def collect(depsgraph, lib=None, line_settings=None):
             extracted[key] = None
             try:
                 extracted[key] = read_object(ob, instance_label(inst), materials, lib=lib,
-                                             line_settings=line_settings)
+                                             line_settings=line_settings, cache=cache)
             except SkipObject as e:
                 reports.append(str(e))
             if extracted[key] is not None:

@@ -1,0 +1,87 @@
+"""Extractions kept between final renders (addon/render_cache.py): a render of unchanged meshes
+reuses the last render's classification and draws the same image; an edited mesh, a changed
+material or line settings are read afresh, and the image is the one a render from nothing draws;
+what a frame no longer draws is dropped after one more frame."""
+import unittest
+
+import bpy
+import numpy as np
+
+import helpers
+import scene_zoo as zoo
+
+
+def cache():
+    return helpers.addon().render_cache.EXTRACTS
+
+
+def scene_with_box():
+    helpers.empty_scene(160, 120, use_lines=True)
+    helpers.add_camera((4.0, -5.0, 3.5))
+    helpers.add_sun()
+    box = zoo.box("Box", 2.0)
+    mat = zoo.material("Grey", (0.6, 0.6, 0.6))
+    mat.edgelight.radius = 0.05
+    box.data.materials.append(mat)
+    return box
+
+
+def render():
+    rec = helpers.render()
+    return rec, np.asarray(rec["pixels"]).copy()
+
+
+def native_of(rec, name):
+    return next(inst.mesh.native for inst in rec["scene"].instances if inst.mesh.name == name)
+
+
+def from_nothing():
+    """The current scene rendered with nothing kept from earlier renders."""
+    cache().clear()
+    return render()[1]
+
+
+class RenderCache(unittest.TestCase):
+    def test_unchanged_meshes_are_reused(self):
+        scene_with_box()
+        first, image = render()
+        second, again = render()
+        self.assertIs(native_of(second, "Box"), native_of(first, "Box"))
+        np.testing.assert_array_equal(again, image)
+
+    def test_edited_mesh_is_read_again(self):
+        box = scene_with_box()
+        first, image = render()
+        box.data.vertices[0].co.z += 0.4
+        box.data.update()
+        second, edited = render()
+        self.assertIsNot(native_of(second, "Box"), native_of(first, "Box"))
+        self.assertGreater(float(np.abs(edited - image).max()), 0.05, "the edit shows")
+        np.testing.assert_array_equal(edited, from_nothing())
+
+    def test_material_and_line_changes_apply(self):
+        box = scene_with_box()
+        render()
+        box.data.materials[0].edgelight.radius = 0.15
+        bpy.context.scene.edgelight.line_crease.width = 3.0
+        second, changed = render()
+        np.testing.assert_array_equal(changed, from_nothing())
+
+    def test_unused_extractions_are_dropped(self):
+        box = scene_with_box()
+        other = zoo.box("Other", 1.0, (0.0, 0.0, 2.0))
+        other.data.materials.append(box.data.materials[0])
+        scene = bpy.context.scene
+        render()
+        self.assertEqual(len(cache()), 2)
+        other.hide_render = True
+        scene.frame_set(2)
+        render()
+        self.assertEqual(len(cache()), 2, "kept one frame past its last use")
+        scene.frame_set(3)
+        render()
+        self.assertEqual(len(cache()), 1)
+
+
+if __name__ == "__main__":
+    unittest.main()
