@@ -257,13 +257,29 @@ def _forget_extractions(*_args):
     render_cache.EXTRACTS.clear()
 
 
+@bpy.app.handlers.persistent
+def _render_job_ended(scene=None, *_args):
+    """A render job (a still, or every frame of an animation) ended: its extractions are kept
+    for the next job only with Persistent Data on (Render Properties > Performance, as Cycles
+    does: they hold memory while nothing renders)."""
+    if not getattr(getattr(scene, "render", None), "use_persistent_data", False):
+        render_cache.EXTRACTS.clear()
+
+
+_HANDLERS = (("load_post", _forget_extractions), ("render_complete", _render_job_ended),
+             ("render_cancel", _render_job_ended))
+
+
 def register():
     bpy.utils.register_class(EdgeLightRenderEngine)
-    bpy.app.handlers.load_post.append(_forget_extractions)
+    for name, handler in _HANDLERS:
+        getattr(bpy.app.handlers, name).append(handler)
 
 
 def unregister():
-    while _forget_extractions in bpy.app.handlers.load_post:
-        bpy.app.handlers.load_post.remove(_forget_extractions)
+    for name, handler in _HANDLERS:
+        handlers = getattr(bpy.app.handlers, name)
+        while handler in handlers:
+            handlers.remove(handler)
     render_cache.EXTRACTS.clear()
     bpy.utils.unregister_class(EdgeLightRenderEngine)

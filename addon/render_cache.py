@@ -5,9 +5,11 @@ the edges of every mesh afresh (on a 400k-triangle grid that was 2 of a render's
 An extraction is reused only for the same object (its label and materials) and the same
 content: a fingerprint of every array the extraction reads from the evaluated mesh (positions,
 topology, corner normals, edge marks, bevel weights, material indices). Shading and line
-settings are applied afresh on reuse, as the viewport does on a material change. Only what the
-previous frame used is kept past a frame change, one extraction per object; a file load and the
-add-on's unregistering drop everything. No bpy: plain-Python tests import it.
+settings are applied afresh on reuse, as the viewport does on a material change. Within a render
+job (every frame of an animation) what the previous frame used is kept past a frame change, one
+extraction per object; when the job ends everything is dropped unless the scene's Persistent
+Data is on (engine.py); a file load and the add-on's unregistering drop everything. No bpy:
+plain-Python tests import it.
 """
 import hashlib
 

@@ -144,6 +144,9 @@ class EDGELIGHT_PT_render(EdgeLightPanel, bpy.types.Panel):
         col.prop(s, "viewport_samples", text="Viewport")
         layout.prop(s, "highlights")
         layout.prop(context.scene.render, "film_transparent")
+        # Blender's own setting (Cycles shows it under Performance): keep the meshes' extractions
+        # from one render job to the next (render_cache.py).
+        layout.prop(context.scene.render, "use_persistent_data")
 
 
 class EDGELIGHT_PT_lines(EdgeLightPanel, bpy.types.Panel):

@@ -1,7 +1,9 @@
-"""Extractions kept between final renders (addon/render_cache.py): a render of unchanged meshes
-reuses the last render's classification and draws the same image; an edited mesh, a changed
-material or line settings are read afresh, and the image is the one a render from nothing draws;
-what a frame no longer draws is dropped after one more frame."""
+"""Extractions kept between final renders (addon/render_cache.py): within a render job (an
+animation) and, with the scene's Persistent Data on, from one job to the next. A render of
+unchanged meshes reuses the last render's classification and draws the same image; an edited
+mesh, a changed material or line settings are read afresh, and the image is the one a render
+from nothing draws; what a frame no longer draws is dropped after one more frame; without
+Persistent Data nothing is kept once a job ends."""
 import unittest
 
 import bpy
@@ -15,8 +17,9 @@ def cache():
     return helpers.addon().render_cache.EXTRACTS
 
 
-def scene_with_box():
-    helpers.empty_scene(160, 120, use_lines=True)
+def scene_with_box(persistent=True):
+    scene = helpers.empty_scene(160, 120, use_lines=True)
+    scene.render.use_persistent_data = persistent  # kept from one still render to the next
     helpers.add_camera((4.0, -5.0, 3.5))
     helpers.add_sun()
     box = zoo.box("Box", 2.0)
@@ -66,6 +69,11 @@ class RenderCache(unittest.TestCase):
         bpy.context.scene.edgelight.line_crease.width = 3.0
         second, changed = render()
         np.testing.assert_array_equal(changed, from_nothing())
+
+    def test_nothing_kept_after_a_job_without_persistent_data(self):
+        scene_with_box(persistent=False)
+        render()
+        self.assertEqual(len(cache()), 0)
 
     def test_unused_extractions_are_dropped(self):
         box = scene_with_box()
