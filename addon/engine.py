@@ -216,7 +216,7 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         # Extractions are kept for the next render (render_cache.py): a frame of an animation
         # whose meshes did not change reuses them.
         scene = depsgraph.scene
-        render_cache.EXTRACTS.begin((scene.name, scene.frame_current, scene.frame_subframe))
+        render_cache.EXTRACTS.begin(scene.name, (scene.frame_current, scene.frame_subframe))
         data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings, cache=render_cache.EXTRACTS)
         if len(data.lights) > frame.MAX_LIGHTS:
             data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
@@ -259,11 +259,10 @@ def _forget_extractions(*_args):
 
 @bpy.app.handlers.persistent
 def _render_job_ended(scene=None, *_args):
-    """A render job (a still, or every frame of an animation) ended: its extractions are kept
-    for the next job only with Persistent Data on (Render Properties > Performance, as Cycles
-    does: they hold memory while nothing renders)."""
-    if not getattr(getattr(scene, "render", None), "use_persistent_data", False):
-        render_cache.EXTRACTS.clear()
+    """A render job (a still, or every frame of an animation) ended: what its last frame used is
+    kept for the next job only with Persistent Data on (shown in EdgeLight's render panel; Cycles
+    has it under Performance): it holds memory while nothing renders."""
+    render_cache.EXTRACTS.end_job(keep=getattr(getattr(scene, "render", None), "use_persistent_data", False))
 
 
 _HANDLERS = (("load_post", _forget_extractions), ("render_complete", _render_job_ended),

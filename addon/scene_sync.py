@@ -147,13 +147,14 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
                                      _foreach(mesh.loops, "edge_index", np.int64), None)
     corner_nor = compat.corner_normals(mesh)[tri_loops.reshape(-1)]
     shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
-    key = digest = None
+    key = None
     if cache is not None:
-        key = (name, tuple(m.name_full if m else "" for m in materials), id(lib))
-        digest = render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot, marks, bevel,
-                                           tri_poly, polygons.start, polygons.total, polygons.loop_vert,
-                                           polygons.loop_edge, corner_nor))
-        kept = cache.get(key, digest)
+        # The content in the key: a Geometry Nodes host's own mesh and the meshes it generates
+        # share its label.
+        key = (name, id(lib), render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot,
+                                                        marks, bevel, tri_poly, polygons.start, polygons.total,
+                                                        polygons.loop_vert, polygons.loop_edge, corner_nor)))
+        kept = cache.get(key)
         if kept is not None:
             return _reused(kept, shading, line_settings)
     polygons.normal = polygon_unit_normals(mesh, positions)
@@ -190,7 +191,7 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
     if cache is not None:
-        cache.put(key, digest, out)
+        cache.put(key, out)
     return out
 
 

@@ -75,18 +75,32 @@ class RenderCache(unittest.TestCase):
         render()
         self.assertEqual(len(cache()), 0)
 
-    def test_unused_extractions_are_dropped(self):
+    def test_another_material_reuses_the_mesh(self):
+        """The materials are applied afresh, so assigning another one reads nothing again."""
+        box = scene_with_box()
+        first, _ = render()
+        other = zoo.material("Red", (0.8, 0.1, 0.1))
+        other.edgelight.radius = 0.1
+        box.data.materials[0] = other
+        second, image = render()
+        self.assertIs(native_of(second, "Box"), native_of(first, "Box"))
+        np.testing.assert_array_equal(image, from_nothing())
+
+    def test_only_the_last_render_is_kept(self):
+        """Kept past a job: what its last frame used, nothing more (re-rendering the same frame
+        after each edit does not pile up extractions)."""
         box = scene_with_box()
         other = zoo.box("Other", 1.0, (0.0, 0.0, 2.0))
         other.data.materials.append(box.data.materials[0])
-        scene = bpy.context.scene
         render()
         self.assertEqual(len(cache()), 2)
+        for step in range(3):
+            box.data.vertices[0].co.z += 0.1
+            box.data.update()
+            render()
+            self.assertEqual(len(cache()), 2, f"edit {step}")
         other.hide_render = True
-        scene.frame_set(2)
-        render()
-        self.assertEqual(len(cache()), 2, "kept one frame past its last use")
-        scene.frame_set(3)
+        bpy.context.scene.frame_set(2)
         render()
         self.assertEqual(len(cache()), 1)
 
