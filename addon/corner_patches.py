@@ -3,10 +3,11 @@ of the sphere of radius r that touches the three faces (the rolling ball's corne
 modifier's vertex patch; docs/highlight_math.md, "Corner patches"). The bands stop at mitres
 there; the patch is drawn over them (shaders/edge_corner.*).
 
-A vertex is a corner where exactly three rounded edges meet, all convex, and the fan round it
-falls into three sectors, one between each two of those edges: the sides of the two edges
-facing each other there turn by less than SECTOR_TURN_DEG (one face, or facets of one smooth
-patch). Each sector's normal is the mean of those two sides'. No bpy: plain-Python tests import
+A vertex is a corner where exactly three rounded edges meet, all convex, no other edge there
+ends a smooth patch (sharp, open, or folded past radius_clamp.SMOOTH_FOLD_DEG), and the fan round
+it falls into three sectors, one between each two of those edges: the sides of the two edges
+facing each other there turn by less than SECTOR_TURN_DEG (the sum of a patch's folds across a
+sector). Each sector's normal is the mean of those two sides'. No bpy: plain-Python tests import
 it.
 """
 from dataclasses import dataclass
@@ -14,8 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 
 # Two sides of one sector (edges meeting at the corner, the faces between them) turn by at most
-# this: more and a fold between them (a sharp edge left unrounded) makes the fan no corner of
-# three faces.
+# this: the facets of one smooth patch, each fold under 30 degrees, may add up to more than one
+# fold, but a sector curving further is no face a ball can touch.
 SECTOR_TURN_DEG = 40.0
 # |det| of the three unit sector normals below this: faces too near one plane (a shallow
 # corner), whose ball sits far from the vertex; its bands' mitres stand.
@@ -54,16 +55,20 @@ class Corners:
                                                                    self.radius, self.centre, self.faces)))
 
 
-def find(edges, positions, normals, convex, chosen, radius):
+def find(edges, positions, normals, convex, chosen, radius, stop=None):
     """Corner patches of a mesh. edges (E, 2) vertex indices; normals (E, 6) each edge's two
     faces' unit normals (N1, N2, oriented alike); convex, chosen (E,) booleans; radius (E,) the
-    chosen edges' radii."""
+    chosen edges' radii; stop (E,) the edges a face's smooth patch ends at (the rounded ones,
+    sharp, open or folded past radius_clamp.SMOOTH_FOLD_DEG: edge_choice), default the chosen."""
     nv = len(positions)
     sel = np.flatnonzero(chosen)
     conv = sel[convex[sel]]
     count_all = np.bincount(edges[sel].reshape(-1), minlength=nv)
     count_conv = np.bincount(edges[conv].reshape(-1), minlength=nv)
-    at = (count_all == 3) & (count_conv == 3)
+    # No other patch boundary round the vertex: an unrounded fold or a sharp mark inside a
+    # sector would make it two faces, and the ball would not meet the bands' arcs.
+    count_stop = np.bincount(edges[np.flatnonzero(chosen if stop is None else stop)].reshape(-1), minlength=nv)
+    at = (count_all == 3) & (count_conv == 3) & (count_stop == 3)
     inc_v = edges[conv].reshape(-1).astype(np.int64)
     inc_e = np.repeat(conv, 2)
     keep = at[inc_v]

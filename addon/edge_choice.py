@@ -36,6 +36,12 @@ def same_edges(a, b):
                for k in a)
 
 
+def choice_key(shading):
+    """What choose_edges reads of the slots' shading (the material's name for the radius clamp
+    notes): equal keys choose the same edges and record the same notes."""
+    return tuple((s.enabled, s.radius, s.K, s.rules, s.angle_deg, s.material) for s in shading)
+
+
 def choose_edges(d, shading):
     """Edges each material rounds. An edge between two materials is rounded when both enable
     rounding and either one's rule picks it; it takes the smaller radius and the shading of the
@@ -83,7 +89,11 @@ def choose_edges(d, shading):
     e = picked_edges
     record_radius_clamps(d, shading, ((slot_a[e], pick_a[e], rad_a[e]), (slot_b[e], pick_b[e], rad_b[e])), limit)
     convex = (flags & native.EDGE_CONVEX) != 0
-    corners = corner_patches.find(edges, positions, normals, convex, chosen, radius)
+    corners = corner_patches.find(edges, positions, normals, convex, chosen, radius, stop)
+    # A patch takes one material's shading: where the three bands have different ones, their
+    # mitres stand.
+    one_slot = np.all(slot_a[corners.edges] == slot_a[corners.edges[:, :1]], axis=1)
+    corners = corners.subset(np.flatnonzero(one_slot))
     corners.faces = surface_ids(d, np.concatenate([face_a[corners.edges], face_b[corners.edges]], axis=1))
     corner_slot = slot_a[corners.edges[:, 0]]
     out = {}

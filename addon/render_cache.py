@@ -12,6 +12,7 @@ Persistent Data is on (engine.py), else nothing; a file load and the add-on's un
 everything. No bpy: plain-Python tests import it.
 """
 import hashlib
+import threading
 
 import numpy as np
 
@@ -27,51 +28,65 @@ def fingerprint(arrays):
 
 
 class ExtractCache:
-    """Extractions by key: (object label, library, content fingerprint), each with the scene
+    """Kept values by key: (object label, library, content fingerprint), each with the scene
     whose render kept it. Per scene, what its current frame used; the previous frame's unused
-    ones are dropped when its frame changes, and the job's end keeps only what the last frame of
-    each scene used (or nothing)."""
+    ones are dropped when its frame changes, and a job's end keeps only what the last frame of
+    each scene it rendered used (or nothing). Renders run on the render thread, file loads and
+    unregistering on the main thread: one lock."""
 
     def __init__(self):
-        self.clear()
+        self._lock = threading.Lock()
+        self._reset()
 
     def begin(self, scene, frame):
         """A render of `scene` (its name) at `frame` starts (one per view layer)."""
-        if self._frame.get(scene) != frame:
-            if scene in self._frame:
-                self._drop(scene)
-            self._frame[scene] = frame
-            self._used[scene] = set()
-        self._scene = scene
+        with self._lock:
+            if self._frame.get(scene) != frame:
+                if scene in self._frame:
+                    self._drop(scene)
+                self._frame[scene] = frame
+                self._used[scene] = set()
+            self._scene = scene
 
     def get(self, key):
-        """The extraction kept for `key`, or None."""
-        entry = self._entries.get(key)
-        if entry is None:
-            return None
-        self._entries[key] = (entry[0], self._scene)
-        self._used[self._scene].add(key)
-        return entry[0]
+        """The value kept for `key`, or None (also when no render has begun since a clear)."""
+        with self._lock:
+            entry = self._entries.get(key)
+            if entry is None or self._scene not in self._used:
+                return None
+            self._entries[key] = (entry[0], self._scene)
+            self._used[self._scene].add(key)
+            return entry[0]
 
-    def put(self, key, extract):
-        self._entries[key] = (extract, self._scene)
-        self._used[self._scene].add(key)
+    def put(self, key, value):
+        with self._lock:
+            if self._scene in self._used:
+                self._entries[key] = (value, self._scene)
+                self._used[self._scene].add(key)
 
     def end_job(self, keep):
-        """A render job ended: with `keep`, what the last frame of each scene used stays."""
-        if not keep:
-            self.clear()
-            return
-        for scene in list(self._frame):
-            self._drop(scene)
-        # The next job starts afresh: its first frame drops nothing when it begins.
-        self._frame, self._used = {}, {}
+        """A render job ended: with `keep`, what the last frame of each scene it rendered used
+        stays; the rest goes."""
+        with self._lock:
+            if not keep:
+                self._reset()
+                return
+            for scene in list(self._frame):
+                self._drop(scene)
+            rendered = set(self._frame)
+            self._entries = {k: v for k, v in self._entries.items() if v[1] in rendered}
+            # The next job starts afresh: its first frame drops nothing when it begins.
+            self._frame, self._used, self._scene = {}, {}, None
+
+    def clear(self):
+        with self._lock:
+            self._reset()
 
     def _drop(self, scene):
         used = self._used.get(scene, set())
         self._entries = {k: v for k, v in self._entries.items() if v[1] != scene or k in used}
 
-    def clear(self):
+    def _reset(self):
         self._entries = {}
         self._frame = {}
         self._used = {}

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import compat, native, radius_clamp, render_cache
-from .edge_choice import choose_edges, same_edges
+from .edge_choice import choice_key, choose_edges, same_edges
 from .edge_data import EdgeData, first_two_faces
 from .lines import static_lines
 from .materials import shading_of
@@ -156,7 +156,7 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
                                                         polygons.loop_vert, polygons.loop_edge, corner_nor)))
         kept = cache.get(key)
         if kept is not None:
-            return _reused(kept, shading, line_settings)
+            return _reused(cache, key, kept, shading, line_settings)
     polygons.normal = polygon_unit_normals(mesh, positions)
     tri_normals = polygons.normal[tri_poly]
     try:
@@ -191,18 +191,26 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
     if cache is not None:
-        cache.put(key, out)
+        _keep(cache, key, out, shading)
     return out
 
 
-def _reused(kept, shading, line_settings):
-    """A kept extraction with this render's shading and lines, as a copy (the kept one stays as
-    it was): edges chosen again only where the shading changed, no per-view state."""
-    edges = kept.edges
-    if shading != kept.slot_shading:
-        chosen = choose_edges(kept.edge_data, shading)
-        edges = kept.edges if same_edges(chosen, kept.edges) else chosen
-    out = dataclasses.replace(kept, slot_shading=shading, edges=edges, views={})
+def _keep(cache, key, extract, shading):
+    """Keeps a copy without what belongs to this render alone: its views (native handles) and
+    its shading (which may hold this render's images), with the edge choice's key instead."""
+    cache.put(key, (dataclasses.replace(extract, views={}, slot_shading=[]), choice_key(shading)))
+
+
+def _reused(cache, key, kept, shading, line_settings):
+    """A kept extraction with this render's shading and lines, as a copy: edges chosen again
+    only where what the choice reads of the shading changed (and kept so for the next frame),
+    no per-view state."""
+    extract, chosen_with = kept
+    if choice_key(shading) != chosen_with:
+        chosen = choose_edges(extract.edge_data, shading)
+        extract = dataclasses.replace(extract, edges=extract.edges if same_edges(chosen, extract.edges) else chosen)
+        _keep(cache, key, extract, shading)
+    out = dataclasses.replace(extract, slot_shading=shading, views={})
     out.update_lines(line_settings)
     return out
 

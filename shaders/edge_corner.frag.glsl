@@ -9,22 +9,13 @@
  * through by 1 - K: a bright disc at K < 1. */
 
 /* Colour of the surface at world point X with unit normal N seen along unit V: the surface
- * pass's Blinn-Phong, the specular tinted as the bands' (edge_shading.glsl). */
+ * pass's Blinn-Phong (lighting.glsl), the specular tinted as the bands' (edge_shading.glsl). */
 vec3 el_corner_colour(vec3 X, vec3 N, vec3 V)
 {
-  float n = spec_color.w;
   vec3 col = frame.ambient.rgb * base_color.rgb;
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
-    vec3 L, E;
-    light_at(i, X, L, E);
-    float nl = dot(N, L);
-    if (nl <= 0.0) {
-      continue;
-    }
-    vec3 H = normalize(L + V);
-    col += E * (base_color.rgb * (nl / 3.14159265) +
-                tint.rgb * spec_color.rgb * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
+    col += el_blinn_phong(i, X, N, V, base_color.rgb, tint.rgb * spec_color.rgb, spec_color.w);
   }
   return col;
 }
@@ -56,6 +47,9 @@ void main()
   vec2 pc = gl_FragCoord.xy;
   bool persp = frame.eye.w > 0.5;
   vec3 Q = corner_point;
+  /* The pixel's footprint on the plane through the centre, taken before any fragment of the
+   * quad may be discarded (derivatives are undefined after a non-uniform discard). */
+  vec3 step_x = dFdx(Q), step_y = dFdy(Q);
   vec3 D = persp ? normalize(Q - frame.eye.xyz) : frame.view_dir.xyz;
   float dist = persp ? length(corner_centre - frame.eye.xyz) : 1.0;
   float world_per_px = dist / frame.camera.x;
@@ -98,12 +92,11 @@ void main()
 
   /* Four sub-samples on a rotated grid over the pixel's footprint on the plane through the
    * centre. */
-  vec3 dx = dFdx(Q), dy = dFdy(Q);
   const vec2 offs[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125), vec2(0.125, 0.375), vec2(-0.375, 0.125));
   vec3 sum = vec3(0.0);
   float covered = 0.0;
   for (int k = 0; k < 4; k++) {
-    vec3 q = Q + offs[k].x * dx + offs[k].y * dy;
+    vec3 q = Q + offs[k].x * step_x + offs[k].y * step_y;
     vec3 d = persp ? normalize(q - frame.eye.xyz) : D;
     vec3 hit;
     vec3 N = el_ball_normal(q, d, hit);

@@ -33,6 +33,21 @@ float blinn_norm(float n)
   return (n + 8.0) / (8.0 * 3.14159265);
 }
 
+/* What light i adds at world point X with unit normal N seen along unit V: Lambert diffuse of
+ * `albedo` plus the normalised Blinn-Phong lobe of `spec` and exponent n, nothing where the light
+ * is behind the surface. The surface pass and the corner patches shade with it alike. */
+vec3 el_blinn_phong(int i, vec3 X, vec3 N, vec3 V, vec3 albedo, vec3 spec, float n)
+{
+  vec3 L, E;
+  light_at(i, X, L, E);
+  float nl = dot(N, L);
+  if (nl <= 0.0) {
+    return vec3(0.0);
+  }
+  vec3 H = normalize(L + V);
+  return E * (albedo * (nl / 3.14159265) + spec * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
+}
+
 /* Normals transform by the inverse transpose of the linear part; the cofactor matrix is that
  * times det, so three cross products and det's sign give the direction without an inverse.
  * A singular transform (an object scaled to zero along an axis) still gives a finite normal:

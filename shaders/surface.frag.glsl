@@ -43,14 +43,7 @@ void main()
   vec3 col = frame.ambient.rgb * albedo;
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
-    vec3 L, E;
-    light_at(i, world_pos, L, E);
-    float nl = dot(N, L);
-    if (nl <= 0.0) {
-      continue;
-    }
-    vec3 H = normalize(L + V);
-    col += E * (albedo * (nl / 3.14159265) + spec * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
+    col += el_blinn_phong(i, world_pos, N, V, albedo, spec, n);
   }
   out_color = vec4(col, base_color.a);
 }

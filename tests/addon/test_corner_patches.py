@@ -1,8 +1,9 @@
 """Where corner patches go (addon/corner_patches.py), on meshes small enough to know the answer:
 a box with every edge rounded (eight corners, the ball r under each face), the same box with a
-top edge cut by a collinear vertex (that vertex is no corner), a box whose vertical edges are
-not rounded (no corner), a box whose top face is a fan of triangles (still eight corners: the
-sectors are sides of one face), and a needle-sharp pyramid tip (no corner: the ball would sit
+top edge cut by a collinear vertex (two rounded edges there: no corner; the eight stay), a box
+whose vertical edges are not rounded (no corner), a box whose top face is a fan of triangles
+(still eight corners: the sectors are sides of one face), a top folded along an unrounded
+diagonal (no corner at its ends), and a needle-sharp pyramid tip (no corner: the ball would sit
 far from the vertex).
 
     /usr/bin/python3 tests/addon/test_corner_patches.py
@@ -18,10 +19,14 @@ corner_patches = addon_module("corner_patches")
 
 
 def corners(positions, edges, polys, tris, rounded, radius=0.1):
+    """The corners, with every rounded edge and every unrounded fold past 30 degrees ending a
+    face's smooth patch (as edge_choice gives them)."""
     normals, _ = edge_frame(positions, edges, polys, tris)
     e = positions[edges[:, 1]] - positions[edges[:, 0]]
     convex = np.einsum("ek,ek->e", np.cross(normals[:, :3], normals[:, 3:]), e) > 0.0
-    return corner_patches.find(edges, positions, normals, convex, rounded, np.full(len(edges), radius, np.float32))
+    fold = np.degrees(np.arccos(np.clip(np.einsum("ek,ek->e", normals[:, :3], normals[:, 3:]), -1.0, 1.0)))
+    return corner_patches.find(edges, positions, normals, convex, rounded, np.full(len(edges), radius, np.float32),
+                               rounded | (fold > 30.0))
 
 
 class CornerPatches(unittest.TestCase):
@@ -46,6 +51,17 @@ class CornerPatches(unittest.TestCase):
         k = list(c.vertex).index(0)
         self.assertAlmostEqual(float(c.radius[k]), 0.05)
         np.testing.assert_allclose(c.centre[k], [0.05, 0.05, 0.05], atol=1e-6)
+
+    def test_unrounded_fold_inside_a_sector(self):
+        # The top face as two triangles folded 35.3 degrees along their diagonal 1-7, which is
+        # not rounded: at its ends the top is two faces, so no ball; the other corners stay.
+        v = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+        v[5] = (1.0, 0.0, 0.5)
+        polys_ = [[0, 2, 6, 4], [0, 4, 5, 1], [2, 3, 7, 6], [0, 1, 3, 2], [4, 6, 7, 5], [1, 5, 7], [1, 7, 3]]
+        positions, edges, polys, tris = mesh(v, polys_)
+        diagonal = (edges == 1).any(axis=1) & (edges == 7).any(axis=1)
+        c = corners(positions, edges, polys, tris, ~diagonal)
+        self.assertEqual(sorted(c.vertex), [0, 2, 3, 4, 5, 6])
 
     def test_collinear_vertex_is_no_corner(self):
         positions, edges, polys, tris = box(cut=True)

@@ -55,6 +55,21 @@ class Cache(unittest.TestCase):
         self.c.end_job(keep=False)
         self.assertEqual(len(self.c), 0)
 
+    def test_a_job_keeps_only_its_scenes(self):
+        self.frame("S", 1, ["a"])
+        self.frame("T", 1, ["b"])
+        self.c.end_job(keep=True)
+        self.frame("S", 1, ["a"])
+        self.c.end_job(keep=True)
+        self.assertEqual(len(self.c), 1, "T was not rendered by the last job")
+
+    def test_cleared_during_a_render(self):
+        self.frame("S", 1, ["a"])
+        self.c.clear()  # a file load or the add-on disabled while rendering
+        self.assertIsNone(self.c.get("a"))
+        self.c.put("a", "extract a")
+        self.assertEqual(len(self.c), 0)
+
     def test_fingerprint(self):
         a = np.arange(12, dtype=np.float32)
         self.assertEqual(render_cache.fingerprint([a, a]), render_cache.fingerprint([a.copy(), a.copy()]))

@@ -114,8 +114,9 @@ class BandEnds(unittest.TestCase):
             self.assertLess(weight, 0.5, name)
 
     def test_box_corner_bands_mitre(self):
-        """Two rounded edges at a corner of a box's top face (its vertical edges are left sharp,
-        so no ball rounds the corner: docs/highlight_math.md, "Corner patches"): the two bands
+        """Two rounded edges at a corner of a box's top face (the material rounds only the edges
+        marked sharp, the horizontal ones, so no ball rounds the corner: docs/highlight_math.md,
+        "Corner patches"): the two bands
         end on the corner's diagonal, where two fillets meet. Points of the top face 0.3 r from
         one edge and 0.8 r from the other lie on the nearer edge's fillet, so they show that
         band as it is halfway along its edge; square ends left both bands there, the one drawn
@@ -123,7 +124,7 @@ class BandEnds(unittest.TestCase):
         bm = bmesh.new()
         bmesh.ops.create_cube(bm, size=2.0)
         for e in bm.edges:
-            e.smooth = abs(e.verts[0].co.z - e.verts[1].co.z) > 1e-6  # the horizontal edges sharp
+            e.smooth = abs(e.verts[0].co.z - e.verts[1].co.z) > 1e-6  # the horizontal edges marked sharp
         helpers.empty_scene(*RESOLUTION)
         helpers.add_camera((4.0, -5.0, 6.0))
         helpers.add_sun((0.0, 0.0, 1.0), 4.0)
