@@ -1,9 +1,10 @@
 """Corner patches: where three rounded convex edges meet at a vertex, their fillets end on a piece
 of the sphere of radius r that touches the three faces (the rolling ball's corner, as the Bevel
-modifier's vertex patch; docs/highlight_math.md, "Corner patches"). The bands stop at mitres
-there; the patch is drawn over them (shaders/edge_corner.*).
+modifier's vertex patch; docs/highlight_math.md, "Corner patches"); where three concave ones
+meet (an inside corner, a pocket's floor), on the far side of the ball rolling in the air. The
+bands stop at mitres there; the patch is drawn over them (shaders/edge_corner.*).
 
-A vertex is a corner where exactly three rounded edges meet, all convex, no other edge there
+A vertex is a corner where exactly three rounded edges meet, all convex or all concave, no other edge there
 ends a smooth patch (sharp, open, or folded past radius_clamp.SMOOTH_FOLD_DEG), and the fan round
 it falls into three sectors, one between each two of those edges: the sides of the two edges
 facing each other there turn by less than SECTOR_TURN_DEG (the sum of a patch's folds across a
@@ -44,7 +45,8 @@ class Corners:
     edges: np.ndarray    # (K, 3) its three rounded edges
     normals: np.ndarray  # (K, 3, 3) unit normals of its three sectors (AB, BC, CA)
     radius: np.ndarray   # (K,) the ball's radius: the smallest of its edges' radii
-    centre: np.ndarray   # (K, 3) the ball's centre, r under all three faces
+    centre: np.ndarray   # (K, 3) the ball's centre, r under all three faces (convex) or over them
+    fold: np.ndarray     # (K,) +1: three convex edges, -1: three concave ones
     faces: np.ndarray = None  # (K, 6) float32 surface ids of its edges' faces (visibility)
 
     def __len__(self):
@@ -52,7 +54,7 @@ class Corners:
 
     def subset(self, rows):
         return Corners(*(None if a is None else a[rows] for a in (self.vertex, self.position, self.edges, self.normals,
-                                                                   self.radius, self.centre, self.faces)))
+                                                                   self.radius, self.centre, self.fold, self.faces)))
 
 
 def find(edges, positions, normals, convex, chosen, radius, stop=None):
@@ -65,12 +67,14 @@ def find(edges, positions, normals, convex, chosen, radius, stop=None):
     conv = sel[convex[sel]]
     count_all = np.bincount(edges[sel].reshape(-1), minlength=nv)
     count_conv = np.bincount(edges[conv].reshape(-1), minlength=nv)
+    # Three convex edges (the ball inside the solid) or three concave ones (the ball in the air,
+    # the patch filling the inside corner); a mix meets on a saddle, not a ball.
     # No other patch boundary round the vertex: an unrounded fold or a sharp mark inside a
     # sector would make it two faces, and the ball would not meet the bands' arcs.
     count_stop = np.bincount(edges[np.flatnonzero(chosen if stop is None else stop)].reshape(-1), minlength=nv)
-    at = (count_all == 3) & (count_conv == 3) & (count_stop == 3)
-    inc_v = edges[conv].reshape(-1).astype(np.int64)
-    inc_e = np.repeat(conv, 2)
+    at = (count_all == 3) & ((count_conv == 3) | (count_conv == 0)) & (count_stop == 3)
+    inc_v = edges[sel].reshape(-1).astype(np.int64)
+    inc_e = np.repeat(sel, 2)
     keep = at[inc_v]
     inc_v, inc_e = inc_v[keep], inc_e[keep]
     order = np.argsort(inc_v, kind="stable")
@@ -98,7 +102,8 @@ def find(edges, positions, normals, convex, chosen, radius, stop=None):
     ok = (best_cos >= np.cos(np.radians(SECTOR_TURN_DEG))) & (np.abs(det) > MIN_DET) & (r > 0.0)
     # The ball touches each sector's plane from inside: N (c - v) = -r (1, 1, 1), by Cramer's rule
     # (the rows' cross products are the inverse's columns times det).
-    offset = -r[:, None] * (bc + ca + ab) / np.where(ok, det, 1.0)[:, None]
+    fold = np.where(convex[trio[:, 0]], 1.0, -1.0)
+    offset = -(fold * r)[:, None] * (bc + ca + ab) / np.where(ok, det, 1.0)[:, None]
     ok &= (offset * offset).sum(axis=1) <= (MAX_REACH * r) ** 2
     return Corners(verts[ok], positions[verts[ok]].astype(np.float32), trio[ok], sector[ok].astype(np.float32), r[ok].astype(np.float32),
-                   (positions[verts[ok]].astype(np.float64) + offset[ok]).astype(np.float32))
+                   (positions[verts[ok]].astype(np.float64) + offset[ok]).astype(np.float32), fold[ok].astype(np.float32))

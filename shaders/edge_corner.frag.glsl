@@ -20,7 +20,10 @@ vec3 el_corner_colour(vec3 X, vec3 N, vec3 V)
   return col;
 }
 
-/* Ray from Q along unit D against the ball: the front hit's unit normal, or zero for a miss. */
+/* Ray from Q along unit D against the ball: the surface's unit normal where the patch could be,
+ * or zero for a miss. Convex: the front hit, the normal pointing out of the ball. Concave: the
+ * patch is the ball's far side, seen from the air inside it, the normal pointing back to the
+ * centre. */
 vec3 el_ball_normal(vec3 Q, vec3 D, out vec3 hit)
 {
   vec3 m = Q - corner_centre;
@@ -30,8 +33,8 @@ vec3 el_ball_normal(vec3 Q, vec3 D, out vec3 hit)
   if (!(disc >= 0.0)) {
     return vec3(0.0);
   }
-  hit = Q + (-b - sqrt(disc)) * D;
-  return (hit - corner_centre) / corner_radius;
+  hit = Q + (-b - corner_fold * sqrt(disc)) * D;
+  return corner_fold * (hit - corner_centre) / corner_radius;
 }
 
 /* Whether unit normal N lies in the spherical triangle of the three faces' normals. */
@@ -56,8 +59,9 @@ void main()
 
   /* Visibility, as the bands': over one of the corner's own faces it shows; over the
    * background only in the outline's own pixels; elsewhere no surface may lie nearer than the
-   * sharp corner's along this ray (its faces' planes through the vertex: the ray enters the
-   * corner where it crosses the last of the planes it enters by) less half a pixel's footprint. */
+   * sharp corner's along this ray (its faces' planes through the vertex: the ray enters a convex
+   * corner where it crosses the last of the planes it enters by, a concave one where it crosses
+   * the first) less half a pixel's footprint. */
   vec2 id = texelFetch(surface_id, ivec2(pc), 0).rg;
   bool own = id.x == instance_id && id.y > 0.0 &&
              (any(equal(vec3(id.y), corner_faces_a)) || any(equal(vec3(id.y), corner_faces_b)));
@@ -75,16 +79,17 @@ void main()
     }
   }
   else if (!own) {
-    float t = -3.0e38;
+    float t = -3.0e38 * corner_fold;
     vec3 ns[3] = vec3[3](corner_n1, corner_n2, corner_n3);
     for (int k = 0; k < 3; k++) {
       float dn = dot(D, ns[k]);
       if (dn < 0.0) {
-        t = max(t, dot(corner_vertex - Q, ns[k]) / dn);
+        float tk = dot(corner_vertex - Q, ns[k]) / dn;
+        t = corner_fold > 0.0 ? max(t, tk) : min(t, tk);
       }
     }
     float inv_surface = texelFetch(surface_depth, ivec2(pc), 0).r;
-    float corner_depth = -(frame.view * vec4(Q + max(t, -1.0e30) * D, 1.0)).z;
+    float corner_depth = -(frame.view * vec4(Q + clamp(t, -1.0e30, 1.0e30) * D, 1.0)).z;
     if (inv_surface > 0.0 && corner_depth > 1.0 / inv_surface + 0.5 * world_per_px + 1e-5 * dist) {
       discard;
     }

@@ -1,7 +1,8 @@
-/* Corner patch pass: one screen-space square per corner where three rounded convex edges meet
- * (addon/corner_patches.py), covering the image of the ball of radius r that touches the three
- * faces; the fragment shader finds the ball's point each pixel sees (edge_corner.frag.glsl).
- * corner.xy picks the square's corner (-1, +1), corner.z is the radius. */
+/* Corner patch pass: one screen-space square per corner where three rounded convex (or three
+ * concave) edges meet (addon/corner_patches.py), covering the image of the ball of radius r that
+ * touches the three faces; the fragment shader finds the ball's point each pixel sees
+ * (edge_corner.frag.glsl). corner.xy picks the square's corner (-1, +1), corner.z is the radius,
+ * corner.w the fold: +1 convex (the ball under the faces), -1 concave (over them, in the air). */
 void main()
 {
   vec3 wv = (model * vec4(v, 1.0)).xyz;
@@ -13,12 +14,14 @@ void main()
   corner_faces_b = faces_b;
   float r = corner.z * length(mat3(model) * normalize(vec3(1.0)));
   corner_radius = r;
-  /* The ball's centre in world space, r under each face's plane (the model may shear the angles
-   * between the faces, so it is solved here, not in object space). */
+  corner_fold = corner.w;
+  /* The ball's centre in world space, r under each face's plane (over it where the corner is
+   * concave; the model may shear the angles between the faces, so it is solved here, not in
+   * object space). */
   mat3 rows = transpose(mat3(corner_n1, corner_n2, corner_n3));
   float det = determinant(rows);
   bool persp = frame.eye.w > 0.5;
-  vec3 centre = wv + (abs(det) > 1e-3 ? inverse(rows) * vec3(-r) : vec3(0.0));
+  vec3 centre = wv + (abs(det) > 1e-3 ? inverse(rows) * vec3(-r * corner.w) : vec3(0.0));
   corner_centre = centre;
   vec3 to_eye = persp ? frame.eye.xyz - centre : -frame.view_dir.xyz;
   float dist = persp ? length(to_eye) : 1.0;

@@ -83,6 +83,7 @@ def corner_batches(extract):
         corner = np.zeros((n * 4, 4), dtype=np.float32)
         corner[:, :2] = np.tile(_SQUARE, (n, 1))
         corner[:, 2] = rep(c.radius)
+        corner[:, 3] = rep(c.fold)
         vbo = _vertbuf({"v": rep(c.position), "m1": rep(c.normals[:, 0]), "m2": rep(c.normals[:, 1]),
                         "m3": rep(c.normals[:, 2]), "corner": corner, "faces_a": rep(c.faces[:, :3]),
                         "faces_b": rep(c.faces[:, 3:])})

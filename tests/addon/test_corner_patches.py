@@ -1,5 +1,6 @@
 """Where corner patches go (addon/corner_patches.py), on meshes small enough to know the answer:
-a box with every edge rounded (eight corners, the ball r under each face), the same box with a
+a box with every edge rounded (eight corners, the ball r under each face), a room's corner (three
+concave edges: the ball r over each face, in the air), the same box with a
 top edge cut by a collinear vertex (two rounded edges there: no corner; the eight stay), a box
 whose vertical edges are not rounded (no corner), a box whose top face is a fan of triangles
 (still eight corners: the sectors are sides of one face), a top folded along an unrounded
@@ -40,6 +41,18 @@ class CornerPatches(unittest.TestCase):
         np.testing.assert_allclose(c.centre, positions[c.vertex] + inward, atol=1e-6)
         np.testing.assert_allclose(np.abs(np.linalg.det(c.normals)), 1.0, atol=1e-6)
         np.testing.assert_allclose(c.radius, 0.1)
+        np.testing.assert_array_equal(c.fold, 1.0)
+
+    def test_inside_corner(self):
+        # A room's corner: floor and two walls facing into the room. Three concave edges meet at
+        # the origin; the ball rolls in the air, r over each face.
+        v = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (0, 1, 1), (1, 0, 1)]
+        positions, edges, polys, tris = mesh(v, [[0, 1, 2, 3], [0, 3, 5, 4], [0, 4, 6, 1]])
+        at_origin = (edges == 0).any(axis=1)
+        c = corners(positions, edges, polys, tris, at_origin)
+        self.assertEqual(list(c.vertex), [0])
+        self.assertEqual(float(c.fold[0]), -1.0)
+        np.testing.assert_allclose(c.centre[0], [0.1, 0.1, 0.1], atol=1e-6)
 
     def test_smallest_radius(self):
         positions, edges, polys, tris = box()
