@@ -179,12 +179,13 @@ class ViewportState:
         for cache in self._caches():
             if cache.gpu is None:
                 cache.gpu = batches.GpuMesh(cache.extract)
-                self.counters.uploads += len(cache.gpu.surface) + len(cache.gpu.edges) + len(cache.gpu.lines)
+                self.counters.uploads += (len(cache.gpu.surface) + len(cache.gpu.edges) + len(cache.gpu.corners)
+                                          + len(cache.gpu.lines))
                 cache.edges_stale = cache.lines_stale = False
                 fresh = True
             if cache.edges_stale:
                 cache.gpu.rebuild_edges()
-                self.counters.uploads += len(cache.gpu.edges)
+                self.counters.uploads += len(cache.gpu.edges) + len(cache.gpu.corners)
                 cache.edges_stale, fresh = False, True
             if cache.lines_stale:
                 cache.gpu.rebuild_lines()
