@@ -4,12 +4,12 @@ modifier's vertex patch; docs/highlight_math.md, "Corner patches"); where three 
 meet (an inside corner, a pocket's floor), on the far side of the ball rolling in the air. The
 bands stop at mitres there; the patch is drawn over them (shaders/edge_corner.*).
 
-A vertex is a corner where exactly three rounded edges meet, all convex or all concave, no other edge there
-ends a smooth patch (sharp, open, or folded past radius_clamp.SMOOTH_FOLD_DEG), and the fan round
-it falls into three sectors, one between each two of those edges: the sides of the two edges
-facing each other there turn by less than SECTOR_TURN_DEG (the sum of a patch's folds across a
-sector). Each sector's normal is the mean of those two sides'. No bpy: plain-Python tests import
-it.
+A vertex is a corner where exactly three rounded edges meet, all convex or all concave, no other
+edge there ends a smooth patch (sharp, open, or folded past radius_clamp.SMOOTH_FOLD_DEG), and
+the fan round it falls into three sectors, one between each two of those edges: the sides of
+the two edges facing each other there turn by less than SECTOR_TURN_DEG (the sum of a patch's
+folds across a sector). Each sector's normal is the mean of those two sides'. No bpy:
+plain-Python tests import it.
 """
 from dataclasses import dataclass
 
