@@ -66,15 +66,7 @@ void main()
   bool own = id.x == instance_id && id.y > 0.0 &&
              (any(equal(vec3(id.y), corner_faces_a)) || any(equal(vec3(id.y), corner_faces_b)));
   if (!(id.y > 0.0)) {
-    ivec2 size = textureSize(surface_id, 0) - 1;
-    bool fringe = false;
-    for (int dy = -1; dy <= 1; dy++) {
-      for (int dx = -1; dx <= 1; dx++) {
-        vec2 n = texelFetch(surface_id, clamp(ivec2(pc) + ivec2(dx, dy), ivec2(0), size), 0).rg;
-        fringe = fringe || (n.x == instance_id && n.y > 0.0);
-      }
-    }
-    if (!fringe) {
+    if (!el_outline_fringe(ivec2(pc))) {
       discard;
     }
   }

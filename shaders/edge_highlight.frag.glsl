@@ -47,21 +47,10 @@ void main()
    * on a surface that hides its edge, however thin. */
   vec2 id = texelFetch(surface_id, ivec2(pc), 0).rg;
   bool own = id.x == instance_id && id.y > 0.0 && (id.y == edge_faces.x || id.y == edge_faces.y);
-  if (!(id.y > 0.0)) {
-    /* Background: a fillet lies within its part's outline (a convex one inside the solid, a
-     * concave one over its faces), so the band shows past the outline only in the pixels the
-     * part's own edge partly covers: one of the 3x3 around shows this object. */
-    ivec2 size = textureSize(surface_id, 0) - 1;
-    bool fringe = false;
-    for (int dy = -1; dy <= 1; dy++) {
-      for (int dx = -1; dx <= 1; dx++) {
-        vec2 n = texelFetch(surface_id, clamp(ivec2(pc) + ivec2(dx, dy), ivec2(0), size), 0).rg;
-        fringe = fringe || (n.x == instance_id && n.y > 0.0);
-      }
-    }
-    if (!fringe) {
-      discard;
-    }
+  /* Background: a fillet lies within its part's outline (a convex one inside the solid, a
+   * concave one over its faces), so the band shows past it only in the outline's own pixels. */
+  if (!(id.y > 0.0) && !el_outline_fringe(ivec2(pc))) {
+    discard;
   }
   float bias = own ? 3.0e38 : 0.5 * world_per_px + 1e-5 * dist;
   /* Over another face of its own object: the band lies on the plane of the face on this

@@ -19,18 +19,8 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
         shader.uniform_block("frame", ubo)
         pass_state.bind_table(shader, "edge_highlight", tex, info)
         pass_state.bind_inputs(shader, "edge_highlight", targets)
-        for index, inst in enumerate(scene.instances):
-            gm = gpu_meshes[id(inst.mesh)]
-            if not gm.edges:
-                continue
-            shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
-            shader_lib.set_uniform(shader, "instance_id", float(index + 1))
-            for slot, batch in gm.edges.items():
-                s = gm.extract.slot_shading[slot]
-                shading_uniforms(shader, s)
-                shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
-                batch.draw(shader)
-                stats.edges_drawn += len(gm.extract.edges[slot])
+        for gm, slot in _draw_per_slot(shader, scene, gpu_meshes, lambda gm: gm.edges):
+            stats.edges_drawn += len(gm.extract.edges[slot])
     draw_corners(targets, scene, gpu_meshes, ubo)
 
 
@@ -45,14 +35,24 @@ def draw_corners(targets, scene, gpu_meshes, ubo):
             shader.bind()
             shader.uniform_block("frame", ubo)
             pass_state.bind_inputs(shader, pass_name, targets)
-            for index, inst in enumerate(scene.instances):
-                gm = gpu_meshes[id(inst.mesh)]
-                if not gm.corners:
-                    continue
-                shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
-                shader_lib.set_uniform(shader, "instance_id", float(index + 1))
-                for slot, batch in gm.corners.items():
-                    s = gm.extract.slot_shading[slot]
-                    shading_uniforms(shader, s)
-                    shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
-                    batch.draw(shader)
+            _draw_per_slot(shader, scene, gpu_meshes, lambda gm: gm.corners)
+
+
+def _draw_per_slot(shader, scene, gpu_meshes, batches_of):
+    """Draws each instance's batches (batches_of(gpu mesh): slot -> batch) with its model
+    matrix, its id and each slot's shading; returns the (gpu mesh, slot) pairs drawn."""
+    drawn = []
+    for index, inst in enumerate(scene.instances):
+        gm = gpu_meshes[id(inst.mesh)]
+        batches = batches_of(gm)
+        if not batches:
+            continue
+        shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
+        shader_lib.set_uniform(shader, "instance_id", float(index + 1))
+        for slot, batch in batches.items():
+            s = gm.extract.slot_shading[slot]
+            shading_uniforms(shader, s)
+            shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
+            batch.draw(shader)
+            drawn.append((gm, slot))
+    return drawn
