@@ -34,8 +34,9 @@ def _requery(self, context):
 class EdgeLightViewLayerSettings(bpy.types.PropertyGroup):
     use_pass_highlights: bpy.props.BoolProperty(
         name="Highlights", default=False, update=_requery,
-        description="The rounded edges' highlight bands alone, premultiplied RGBA (colour times "
-                    "weight, weight): laid over Surface they give the highlighted surface")
+        description="The rounded edges' highlight bands, premultiplied RGBA (colour times weight, "
+                    "weight) less what each takes out of the faces under it: laid over Surface "
+                    "they give the highlighted surface")
     use_pass_lines: bpy.props.BoolProperty(
         name="Lines", default=False, update=_requery,
         description="The ink lines alone, premultiplied RGBA (colour times opacity, opacity): "

@@ -3,11 +3,23 @@
  * really lies, and the pixel is shaded with the part of the arc whose image it covers. Needs
  * highlight_arc.glsl, edge_shading.glsl and edge_band.glsl. */
 
+/* The share of the band [b0, b1]'s part in the pixel centred at `across` (its box across the
+ * line, a pixel wide) that lies on N1's face's side of the line (at 0; edge_far.z: the side N1's
+ * face lies on in the image). */
+float el_share_on_n1(float across, float b0, float b1)
+{
+  float pa = max(across - 0.5, b0), pb = min(across + 0.5, b1);
+  float on1 = edge_far.z >= 0.0 ? pb - max(pa, 0.0) : min(pb, 0.0) - pa;
+  return pb > pa ? clamp(on1 / (pb - pa), 0.0, 1.0) : 0.5;
+}
+
 /* Premultiplied (W Is, W) of the pixel whose centre is `pc`, at edge point X seen along unit V;
  * `across`: the pixel centre's distance from the edge line in pixels (along edge_screen.zw).
- * Zero where the pixel shows none of the band. */
-vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across)
+ * Zero where the pixel shows none of the band. share1: the share of the band's part in the
+ * pixel that lies on N1's face's side of the line (el_faces_under_band). */
+vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, out float share1)
 {
+  share1 = 0.5;
   ElArc g = el_arc(edge_dir, edge_n1, edge_n2, V);
   float s = sqrt(dot(g.view, g.view)); /* |E x V| */
   if (!(g.width > 0.0) || !(s > 0.0)) {
@@ -36,9 +48,38 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across)
   if (!(W > 0.0 && b1 > b0)) {
     return vec4(0.0);
   }
+  share1 = el_share_on_n1(across, b0, b1);
   /* Fractions of the band from vis.lo's end. */
   float fa = (pa - ends.x) / (ends.y - ends.x), fb = (pb - ends.x) / (ends.y - ends.x);
   ElArc sub = el_sub_arc(g, clamp(min(fa, fb), 0.0, 1.0), clamp(max(fa, fb), 0.0, 1.0));
   vec3 col = el_edge_colour(sub, X, V, edge_dir);
   return vec4(col * W, W);
+}
+
+/* What the band's blend over the pixel gets wrong about the sharp faces it replaces, to add to
+ * its premultiplied colour (docs/highlight_math.md, "The faces under the band"). The composite
+ * is W Is + (1 - W) S, S the pixel's mean of the sharp mesh; a fillet replaces only the faces
+ * under the band: S - W (s1 I1 + (1 - s1) I2) + W Is, with s1 the band's share on N1's side and
+ * I1, I2 the faces' colours along the edge. With S = f1 I1 + (1 - f1) I2 (f1: the pixel's share
+ * on N1's side) the difference is W (f1 - s1) (I1 - I2): zero where the band splits as the
+ * pixel does, large where it lies on a face lit past white and the pixel straddles a dim one.
+ * Only where both faces face the eye, one on each side of the line (edge_far.w); a
+ * silhouette's far side is whatever lies behind it. Where the line crosses the pixel, `far` is
+ * the colour along the edge of the face on the other side of the line from the pixel's centre
+ * and `near_share` the pixel's share on the centre's side; elsewhere near_share is 1. */
+vec3 el_faces_under_band(vec3 X, vec3 V, float across, float share1, float W, out vec3 far, out float near_share)
+{
+  far = vec3(0.0);
+  near_share = 1.0;
+  float f1 = clamp(0.5 + across * edge_far.z, 0.0, 1.0);
+  if (!(edge_far.w > 0.5) || f1 == share1) {
+    return vec3(0.0);
+  }
+  vec3 I1 = el_face_colour(normalize(edge_n1), X, V), I2 = el_face_colour(normalize(edge_n2), X, V);
+  if (f1 > 0.0 && f1 < 1.0) {
+    bool centre_on_1 = f1 >= 0.5;
+    far = centre_on_1 ? I2 : I1;
+    near_share = centre_on_1 ? f1 : 1.0 - f1;
+  }
+  return W * (f1 - share1) * (I1 - I2);
 }

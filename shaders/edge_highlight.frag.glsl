@@ -20,6 +20,26 @@ float el_plane_depth(vec2 pc, vec3 X, vec3 n)
   vec3 p = -(a.w * bc + b.w * cross(c.xyz, a.xyz) + c.w * cross(a.xyz, b.xyz)) / det;
   return -p.z;
 }
+/* Whether the pixel's samples see only the edge's two faces, as far as the first sample's ids
+ * and depths around it tell: the 3x3 around pixel px shows this object, its view depth `depth`
+ * continued over each neighbour by at most the steeper face's slope (`slope`, view depth per
+ * unit across the image) plus half a footprint (`world_per_px`) -- no other part of the object
+ * passes in front there. */
+bool el_only_edge_faces(ivec2 px, float depth, float slope, float world_per_px)
+{
+  ivec2 size = textureSize(surface_id, 0) - 1;
+  bool only = true;
+  for (int dy = -1; dy <= 1; dy++) {
+    for (int dx = -1; dx <= 1; dx++) {
+      ivec2 q = clamp(px + ivec2(dx, dy), ivec2(0), size);
+      vec2 n = texelFetch(surface_id, q, 0).rg;
+      float inv = texelFetch(surface_depth, q, 0).r;
+      float reach = (length(vec2(dx, dy)) * slope + 0.5) * world_per_px;
+      only = only && n.x == instance_id && n.y > 0.0 && inv > 0.0 && abs(1.0 / inv - depth) <= reach;
+    }
+  }
+  return only;
+}
 #endif
 
 /* Edge highlight pass: which pixels of the quad may show the band (visibility against the surface
@@ -84,9 +104,32 @@ void main()
     discard;
   }
 
-  vec4 result = el_band_pixel(pc, X, V, world_per_px, across);
+  float share1;
+  vec4 result = el_band_pixel(pc, X, V, world_per_px, across, share1);
   if (!(result.w > 0.0)) {
     discard;
   }
+#ifdef EL_FACES_UNDER
+  /* Blinn-Phong materials: the band replaces the faces under it, not the pixel's mean (a toon
+   * surface's faces are not shaded by el_face_colour, so its bands blend over the mean). */
+  vec3 far;
+  float near_share;
+  result.rgb += el_faces_under_band(X, V, across, share1, result.w, far, near_share);
+#ifdef EL_EDGE_IDS
+  /* Where the line crosses a pixel that shows only the two faces, the pixel is drawn whole: the
+   * band and what it leaves of each face, the face at the centre in the first sample's colour
+   * there (a smooth face's shading varies across it), the sliver across the line in its face's
+   * colour along the edge. The samples' mean of the sharp step would add their noise, as large
+   * as the step, to a picture in which the fillet leaves no step. */
+  if (near_share < 1.0 && base_color.a >= 1.0) {
+    float c_min = max(min(abs(dot(normalize(edge_n1), V)), abs(dot(normalize(edge_n2), V))), 1.0 / 16.0);
+    float slope = sqrt(max(1.0 - c_min * c_min, 0.0)) / c_min;
+    if (el_only_edge_faces(ivec2(pc), 1.0 / inv_surface, slope, world_per_px)) {
+      vec3 centre = texelFetch(surface_color, ivec2(pc), 0).rgb;
+      result = vec4(result.rgb + (1.0 - result.w) * mix(far, centre, near_share), 1.0);
+    }
+  }
+#endif
+#endif
   out_color = result;
 }

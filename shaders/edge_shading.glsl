@@ -16,3 +16,15 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
   }
   return col;
 }
+
+/* Colour of a sharp face of unit normal N at world point X seen along unit V, as the surface pass
+ * shades it (Blinn-Phong mode): what a band replaces of it (el_faces_under_band). */
+vec3 el_face_colour(vec3 N, vec3 X, vec3 V)
+{
+  vec3 col = frame.ambient.rgb * base_color.rgb;
+  int count = int(frame.camera.y + 0.5);
+  for (int i = 0; i < count; i++) {
+    col += el_blinn_phong(i, X, N, V, base_color.rgb, spec_color.rgb, spec_color.w);
+  }
+  return col;
+}

@@ -2,7 +2,7 @@
 method (shaders/edge_highlight.*), premultiplied into the highlight target, once per frame; then
 the corner patches over them (batches.corner_batches, shaders/edge_corner.*)."""
 from . import frame_data, pass_state, shader_lib, table
-from .surface_pass import shading_uniforms
+from .surface_pass import SURFACE_MODES, shading_uniforms
 
 
 def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
@@ -13,15 +13,26 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
     # The table layout is fixed in the program (highlight_arc.glsl); the surface pass wrote ids:
     # visibility by face (docs/lines.md).
     defines = {**pass_state.table_defines("edge_highlight", info), "EL_EDGE_IDS": 1}
-    shader = shader_lib.get("edge_highlight", defines)
     with pass_state.drawing("edge_highlight", targets.highlight_fb):
-        shader.bind()
-        shader.uniform_block("frame", ubo)
-        pass_state.bind_table(shader, "edge_highlight", tex, info)
-        pass_state.bind_inputs(shader, "edge_highlight", targets)
-        for gm, slot in _draw_per_slot(shader, scene, gpu_meshes, lambda gm: gm.edges):
-            stats.edges_drawn += len(gm.extract.edges[slot])
+        # A Blinn-Phong material's bands replace the sharp faces under them (el_faces_under_band);
+        # a toon material's faces are shaded otherwise, so its bands blend over the pixel.
+        for phong in (True, False):
+            def slots(gm, phong=phong):
+                return {k: b for k, b in gm.edges.items() if _is_phong(gm.extract.slot_shading[k]) == phong}
+            if not any(slots(gpu_meshes[id(inst.mesh)]) for inst in scene.instances):
+                continue
+            shader = shader_lib.get("edge_highlight", {**defines, "EL_FACES_UNDER": 1} if phong else defines)
+            shader.bind()
+            shader.uniform_block("frame", ubo)
+            pass_state.bind_table(shader, "edge_highlight", tex, info)
+            pass_state.bind_inputs(shader, "edge_highlight", targets)
+            for gm, slot in _draw_per_slot(shader, scene, gpu_meshes, slots):
+                stats.edges_drawn += len(gm.extract.edges[slot])
     draw_corners(targets, scene, gpu_meshes, ubo)
+
+
+def _is_phong(shading):
+    return int(shading.toon.mode) == SURFACE_MODES["PHONG"]
 
 
 def draw_corners(targets, scene, gpu_meshes, ubo):

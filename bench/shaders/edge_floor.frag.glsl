@@ -8,7 +8,8 @@
 void main()
 {
   vec4 inputs = vec4(edge_point, edge_radius) + table_params + base_color + spec_color + tint +
-                texelFetch(cos_power_table, ivec2(0), 0).r + texelFetch(surface_depth, ivec2(0), 0).r;
+                texelFetch(cos_power_table, ivec2(0), 0).r + texelFetch(surface_depth, ivec2(0), 0).r +
+                texelFetch(surface_color, ivec2(0), 0).r;
 #ifdef EL_EDGE_IDS
   inputs += texelFetch(surface_id, ivec2(0), 0).r + edge_faces.x + instance_id;
 #endif

@@ -5,11 +5,13 @@
 #undef el_quad_sides
 #undef el_band_pixel
 
-vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across)
+vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, out float share1)
 {
   if (EL_EDGE_METHOD == EL_METHOD_PARTIAL || EL_EDGE_METHOD == EL_METHOD_QUADRATURE) {
-    return el_partial_band_pixel(pc, X, V, world_per_px, across);
+    return el_partial_band_pixel(pc, X, V, world_per_px, across, share1);
   }
+  /* The paper's line replaces nothing but the pixel's mean (no faces-under correction). */
+  share1 = clamp(0.5 + across * edge_far.z, 0.0, 1.0);
   /* The whole-arc and paper methods: a band of projected width w (pixels) centred on the edge
    * line, the pixel's box-filtered coverage of it, and the whole visible arc's mean colour. It
    * is exact only if the band were centred and fell within one pixel; measured against fillets
@@ -33,6 +35,9 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across)
   float w_px = edge_radius * width / world_per_px;
   float ramp = el_axial_ramp(s);
   float cover = clamp(min(across + 0.5, 0.5 * w_px) - max(across - 0.5, -0.5 * w_px), 0.0, 1.0);
+  if (EL_EDGE_METHOD == EL_METHOD_WHOLE) {
+    share1 = el_share_on_n1(across, -0.5 * w_px, 0.5 * w_px);
+  }
   if (EL_EDGE_METHOD == EL_METHOD_PAPER) {
     /* A one-pixel line whatever the width, weighted by the whole arc's image width. */
     if (per_edge) {

@@ -64,6 +64,7 @@ struct Renderer::Impl {
         auto& p = edge_programs[{method, tight_quads, floor}];
         if (!p) {
             auto defines = table_defines(passes.pass("edge_highlight"), table_info);
+            defines.emplace_back("EL_FACES_UNDER", "1");  // Blinn-Phong only: bands replace the faces under them
             if (method == 0 && tight_quads && !floor) {
                 p = std::make_unique<Program>(assemble_program(dir, "edge_highlight", defines));
             } else {

@@ -81,6 +81,46 @@ class ConcaveEdges(unittest.TestCase):
             self.assertLess(errors["concave"][0], errors["convex"][0] + 0.003, f"{width} px")
 
 
+class FacesUnderTheBand(unittest.TestCase):
+    """A band under a pixel or two wide, on an edge between a face lit past white and a dim one: the
+    fillet replaces the faces under the band, so the band must take their share out, not the
+    pixel's mean (docs/highlight_math.md, "The faces under the band"); and where the line crosses
+    a pixel that shows only the two faces, the pixel is drawn whole, with no step left for the
+    samples to alias."""
+
+    TS = np.linspace(0.2, 0.8, 13)
+    OFFSETS = np.arange(-3.0, 3.5, 1.0)
+    EDGE = ((-1.0, -1.0, 1.0), (1.0, -1.0, 1.0))  # the top face's front edge
+
+    def box_scene(self, radius, segments=0, highlights=True):
+        helpers.empty_scene(*RESOLUTION, samples=64 if segments else 8)
+        helpers.add_camera((5.0, -3.0, 4.0))
+        helpers.add_sun((0.0, 0.0, 1.0), 12.0)  # the top face lit past white, the front by the world alone
+        bm = bmesh.new()
+        bmesh.ops.create_cube(bm, size=2.0)
+        zoo.rounded_part("Box", bm, (0.6, 0.6, 0.6), radius)
+        scene = bpy.context.scene
+        scene.edgelight.highlights = highlights
+        if segments:
+            fillets.add_fillets(scene, radius, segments)
+
+    def profile(self, rec):
+        return display(helpers.edge_profile(rec, np.asarray(rec["pixels"])[..., :3], *self.EDGE, self.TS, self.OFFSETS))
+
+    def test_band_replaces_the_faces_under_it(self):
+        for width in (0.5, 1.0, 2.0):
+            radius = radius_for(width)
+            self.box_scene(radius, segments=32)
+            ref = self.profile(helpers.render())
+            self.box_scene(radius)
+            ours = math.sqrt(np.mean((self.profile(helpers.render()) - ref) ** 2))
+            self.box_scene(radius, highlights=False)
+            sharp = math.sqrt(np.mean((self.profile(helpers.render()) - ref) ** 2))
+            print(f"{width} px: RMSE against the fillet: EdgeLight {ours:.4f}, sharp {sharp:.4f}")
+            self.assertLess(ours, 0.01, f"{width} px")
+            self.assertLess(ours, 0.25 * sharp, f"{width} px")
+
+
 def spill(rec, margin=2):
     """The highlight's weight summed over pixels more than `margin` pixels from the part's
     coverage, and how many such pixels there are: a fillet lies within its part's outline."""

@@ -103,9 +103,41 @@ Reference reference(const CubeScene& s, const dvec3& X, float shininess, float r
     return out;
 }
 
+// A sharp face's colour at X (unit normal N), as the surface pass shades it (Blinn-Phong).
+dvec3 face_colour(const CubeScene& s, const dvec3& X, const dvec3& N) {
+    const auto& m = s.scene.material;
+    const dvec3 base(m.base_color), spec(m.spec_color);
+    const dvec3 V = glm::normalize(s.camera.eye - X), L = glm::normalize(s.scene.suns[0].to_light);
+    const double n = m.shininess, nl = glm::dot(N, L);
+    const dvec3 lit = nl > 0.0 ? s.scene.suns[0].color * (base * nl / M_PI +
+                                                          spec * (n + 8.0) / (8.0 * M_PI) *
+                                                              std::pow(std::max(glm::dot(N, glm::normalize(L + V)), 0.0), n))
+                               : dvec3(0.0);
+    return s.scene.ambient * base + lit;
+}
+
+// What the band's blend gets wrong about the faces it replaces, per unit of weight
+// (docs/highlight_math.md, "The faces under the band"): (f1 - s1) (I1 - I2), with f1 the pixel's
+// share on the top face's side of the line and s1 the band's (a band of w_px centred on the line,
+// the whole-arc method's), `side1` the side the top face lies on.
+dvec3 faces_under(const CubeScene& s, const dvec3& X, double across, double w_px, double side1) {
+    const double pa = std::max(across - 0.5, -0.5 * w_px), pb = std::min(across + 0.5, 0.5 * w_px);
+    if (!(pb > pa)) return dvec3(0.0);
+    const double on1 = side1 >= 0.0 ? pb - std::max(pa, 0.0) : std::min(pb, 0.0) - pa;
+    const double s1 = std::clamp(on1 / (pb - pa), 0.0, 1.0), f1 = std::clamp(0.5 + across * side1, 0.0, 1.0);
+    return (f1 - s1) * (face_colour(s, X, kN1) - face_colour(s, X, kN2));
+}
+
+// Which side of the edge's image (along nrm) the top face (N1's) lies on.
+double top_side(const CubeScene& s, const glm::dvec2& s0, const glm::dvec2& nrm) {
+    const glm::dvec2 inside(project(s.camera, 0.5 * (kA + kB) + dvec3(0.0, 0.2, 0.0)));
+    return glm::dot(inside - s0, nrm) < 0.0 ? -1.0 : 1.0;
+}
+
 struct Agreement {
     int checked = 0;
     double worst_rel = 0.0, worst_weight = 0.0;
+    double worst_faces_under = 0.0;  // the largest faces-under term met, relative to the band's colour
 };
 
 // Every pixel of the edge's band with W > 0.2, away from the corners, against the reference at
@@ -115,6 +147,7 @@ Agreement compare(const CubeScene& s, const el_tools::Images& img, float shinine
     const glm::dvec2 s0(a), s1(b);
     const double len = glm::length(s1 - s0);
     const glm::dvec2 d = (s1 - s0) / len, nrm(-d.y, d.x);
+    const double side1 = top_side(s, s0, nrm);
     Agreement out;
     for (int y = 0; y < img.height; ++y) {
         for (int x = 0; x < img.width; ++x) {
@@ -126,12 +159,14 @@ Agreement compare(const CubeScene& s, const el_tools::Images& img, float shinine
             const double t = (u / b.z) / ((1.0 - u) / a.z + u / b.z);
             const dvec3 X = kA + t * (kB - kA);
             const Reference ref = reference(s, X, shininess, radius);
-            const dvec3 got = dvec3(hl[0], hl[1], hl[2]) / double(hl[3]);
-            const dvec3 err = glm::abs(got - ref.colour);
-            const double rel = std::max({err.x, err.y, err.z}) / std::max({ref.colour.x, ref.colour.y, ref.colour.z, 1e-6});
-            out.worst_rel = std::max(out.worst_rel, rel);
             // Unclamped W of the paper, K r_e / (d r_max): the band's width in pixels.
             const double w_px = s.camera.px_per_unit() * radius / (glm::length(s.camera.eye - X) * ref.r.r_max);
+            const dvec3 want = ref.colour + faces_under(s, X, across, w_px, side1);
+            const dvec3 got = dvec3(hl[0], hl[1], hl[2]) / double(hl[3]);
+            const dvec3 err = glm::abs(got - want);
+            const double rel = std::max({err.x, err.y, err.z}) / std::max({ref.colour.x, ref.colour.y, ref.colour.z, 1e-6});
+            out.worst_rel = std::max(out.worst_rel, rel);
+            out.worst_faces_under = std::max(out.worst_faces_under, glm::length(want - ref.colour) / glm::length(ref.colour));
             const double cover = std::clamp(std::min(across + 0.5, 0.5 * w_px) - std::max(across - 0.5, -0.5 * w_px), 0.0, 1.0);
             out.worst_weight = std::max(out.worst_weight, std::abs(double(hl[3]) - cover));
             ++out.checked;
@@ -148,7 +183,8 @@ TEST_F(ShaderReference, HighlightColourAndWeightMatchTheDoubleReference) {
     const el_tools::Images img = render(s);
     const Agreement got = compare(s, img, s.scene.material.shininess, s.scene.material.radius);
     std::cout << "checked " << got.checked << " pixels on " << offscreen_context().description() << ": worst colour error "
-              << got.worst_rel << " (relative), worst weight error " << got.worst_weight << "\n";
+              << got.worst_rel << " (relative), worst weight error " << got.worst_weight << "; faces-under term up to "
+              << got.worst_faces_under << " of the band's colour\n";
     EXPECT_GT(got.checked, 100);
     EXPECT_LT(got.worst_rel, kRelativeTolerance);
     EXPECT_LT(got.worst_weight, kWeightTolerance);
@@ -163,6 +199,20 @@ TEST_F(ShaderReference, HighlightColourAndWeightMatchTheDoubleReference) {
               << "; a 2 % larger exponent: worst colour error " << shininess.worst_rel << "\n";
 }
 
+TEST_F(ShaderReference, ANarrowBandReplacesTheFacesUnderIt) {
+    // Under a pixel wide, the band covers part of the pixels the line crosses, centred on the
+    // line, while the pixel's faces split by where the line crosses it: the faces-under term.
+    const CubeScene s = cube(640, 480, 0.006f);
+    const el_tools::Images img = render(s);
+    const Agreement got = compare(s, img, s.scene.material.shininess, s.scene.material.radius);
+    std::cout << "checked " << got.checked << " pixels: worst colour error " << got.worst_rel << " (relative), worst weight error "
+              << got.worst_weight << "; faces-under term up to " << got.worst_faces_under << " of the band's colour\n";
+    EXPECT_GT(got.checked, 50);
+    EXPECT_GT(got.worst_faces_under, 50.0 * kRelativeTolerance);  // the term is there to be checked
+    EXPECT_LT(got.worst_rel, kRelativeTolerance);
+    EXPECT_LT(got.worst_weight, kWeightTolerance);
+}
+
 TEST_F(ShaderReference, EdgesUnder16PxCarryTheMidpointColour) {
     // Short edges are shaded once, in the vertex shader, by the quad's shading vertex; its flat
     // outputs reach both triangles only under the provoking-vertex convention the quads were
@@ -174,15 +224,19 @@ TEST_F(ShaderReference, EdgesUnder16PxCarryTheMidpointColour) {
     const el_tools::Images img = render(s);
     const Reference ref = reference(s, 0.5 * (kA + kB), s.scene.material.shininess, s.scene.material.radius);
     const glm::dvec2 d = glm::normalize(s1 - s0), nrm(-d.y, d.x);
+    const double side1 = top_side(s, s0, nrm);
+    const dvec3 X = 0.5 * (kA + kB);
+    const double w_px = s.camera.px_per_unit() * s.scene.material.radius / (glm::length(s.camera.eye - X) * ref.r.r_max);
     int checked = 0;
     for (int y = 0; y < img.height; ++y) {
         for (int x = 0; x < img.width; ++x) {
             const float* hl = &img.highlight[4 * (size_t(y) * img.width + x)];
             const glm::dvec2 pc(x + 0.5, y + 0.5);
             const double u = glm::dot(pc - s0, d) / glm::length(s1 - s0);
-            if (!(hl[3] > 0.5f) || !(u > 0.3 && u < 0.7) || std::abs(glm::dot(pc - s0, nrm)) >= 0.5) continue;
+            const double across = glm::dot(pc - s0, nrm);
+            if (!(hl[3] > 0.5f) || !(u > 0.3 && u < 0.7) || std::abs(across) >= 0.5) continue;
             const dvec3 got = dvec3(hl[0], hl[1], hl[2]) / double(hl[3]);
-            const dvec3 err = glm::abs(got - ref.colour);
+            const dvec3 err = glm::abs(got - (ref.colour + faces_under(s, X, across, w_px, side1)));
             EXPECT_LT(std::max({err.x, err.y, err.z}) / std::max({ref.colour.x, ref.colour.y, ref.colour.z}),
                       kRelativeTolerance)
                 << "pixel " << x << ", " << y;
