@@ -46,7 +46,7 @@ def _cylinder(radius, depth, at=(0.0, 0.0, 0.0), segments=24):
 
 
 def _subtract(bm, cutters):
-    """bm minus the union of the cutter bmeshes (the Boolean modifier's exact solver, as an
+    """bm minus the union of the cutter bmeshes (the Boolean modifier, as an
     artist would cut holes); frees the cutters, returns a new bmesh."""
     scene = bpy.context.scene
     target = bpy.data.objects.new("PartTarget", bpy.data.meshes.new("PartTarget"))
@@ -62,7 +62,11 @@ def _subtract(bm, cutters):
         made.append(ob)
         mod = target.modifiers.new(f"Cut{k}", 'BOOLEAN')
         mod.operation = 'DIFFERENCE'
-        mod.solver = 'EXACT'
+        # The Exact solver's faces differ from run to run (the same vertices, split into other
+        # polygons: its threads), and the Bevel modifier's fillets with them (the flange's reference
+        # left unbevelled in some runs); the Fast solver's do not ('FLOAT' from 5.0).
+        solvers = {item.identifier for item in mod.bl_rna.properties["solver"].enum_items}
+        mod.solver = 'FAST' if 'FAST' in solvers else 'FLOAT'
         mod.object = ob
     depsgraph = bpy.context.evaluated_depsgraph_get()
     out = bmesh.new()

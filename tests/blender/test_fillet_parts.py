@@ -120,6 +120,33 @@ class FacesUnderTheBand(unittest.TestCase):
             self.assertLess(ours, 0.01, f"{width} px")
             self.assertLess(ours, 0.25 * sharp, f"{width} px")
 
+    def test_teeth_in_front_keep_their_pixels(self):
+        """pinion (libcgal-demo) at 0.3 px: its teeth pass in front of one another, each tooth's
+        outline over the next one's rounded edges, in pixels whose 3 x 3 ids are all the part's.
+        A pixel is drawn whole only where the depths around it continue the centre's too; without
+        that check the outline's pixels lose the part of the tooth in front that their centres
+        miss (PSNR there against the fillets: 32.5 dB, the sharp mesh 32.4; with it 33.5)."""
+        width = 0.3
+        scene = gt_scenes.open_scene("pinion", 0.01, 1, RESOLUTION)
+        radius = width / gt_scenes.px_per_unit_at_centre(scene)
+        images = {}
+        for label, segments, highlights, samples in (("reference", 32, False, 64), ("ours", 0, True, 8), ("sharp", 0, False, 8)):
+            scene = gt_scenes.open_scene("pinion", radius, samples, RESOLUTION)
+            scene.edgelight.highlights = highlights
+            if segments:
+                fillets.add_fillets(scene, radius, segments)
+            images[label] = helpers.render()
+        ref = np.asarray(images["reference"]["pixels"])[..., :3]
+        sharp = images["sharp"]
+        covered = np.asarray(sharp["surface"])[..., 3] > 0.5
+        changed = np.abs(display(ref) - display(np.asarray(sharp["pixels"])[..., :3])).max(axis=2) > 1.0 / 255.0
+        changed |= np.asarray(images["ours"]["highlight"])[..., 3] > 1.0 / 255.0
+        outline = gt_scenes.regions(scene, changed, covered, width, np.asarray(sharp["depth"])[..., 0])["outline"]
+        psnr = {k: gt_scenes.errors(np.asarray(images[k]["pixels"])[..., :3], ref, outline)[2] for k in ("ours", "sharp")}
+        print(f"pinion at {width} px, outline ({int(outline.sum())} pixels): PSNR EdgeLight {psnr['ours']:.1f} dB, sharp {psnr['sharp']:.1f} dB")
+        self.assertGreater(outline.sum(), 500)
+        self.assertGreater(psnr["ours"], psnr["sharp"] + 0.6)
+
 
 def spill(rec, margin=2):
     """The highlight's weight summed over pixels more than `margin` pixels from the part's
