@@ -1,14 +1,15 @@
 """Rounded-edge highlights against real rounded geometry: frame time and error by region.
 
-    blender -b --factory-startup --addons edgelight --python bench/ground_truth.py -- [OUT.csv] [PARTS] [WIDTHS] [METHODS]
+    blender -b --factory-startup --addons edgelight --python bench/ground_truth.py -- [OUT.csv] [PARTS] [WIDTHS] [METHODS] [REFERENCE]
 
 Ground truth: the same mesh with its rounded edges replaced by circular fillets of radius r
-(Bevel modifier, 32 segments, hardened normals: bench/fillets.py), drawn by EdgeLight with
-highlights off (so the surface shading is exactly the other methods') and REF_SAMPLES jittered
-samples per pixel. Methods, all at SAMPLES samples: highlights off; EdgeLight; the Bevel modifier
-with 1, 2, 4, 8 segments and highlights off. METHODS=all adds the earlier edge methods kept for
-this comparison (the paper's 1-pixel line, the whole-arc mean, the per-pixel quadrature:
-bench/edge_methods.py, bench/shaders/).
+(Bevel modifier, 32 segments, hardened normals: bench/fillets.py; REFERENCE=circular moves
+the modifier's vertices onto exact circles: docs/highlight_math.md, "The reference's fillets"),
+drawn by EdgeLight with highlights off (so the surface shading is exactly the other methods')
+and REF_SAMPLES jittered samples per pixel. Methods, all at SAMPLES samples: highlights off;
+EdgeLight; the Bevel modifier with 1, 2, 4, 8 segments and highlights off. METHODS=all adds the
+earlier edge methods kept for this comparison (the paper's 1-pixel line, the whole-arc mean, the
+per-pixel quadrature: bench/edge_methods.py, bench/shaders/).
 
 Parts (bench/gt_scenes.py): the samples, libcgal-demo meshes and the parts bench/parts.py builds,
 each in the fandisk sample's place. Widths are the fillet radius in pixels at the part's centre,
@@ -39,6 +40,7 @@ PARTS = (ARGS[1].split(",") if len(ARGS) > 1 and ARGS[1] else
           "l_step", "flange", "gear", "hollow_shaft", "cut_box", "filleted_box"])
 WIDTHS = [float(w) for w in ARGS[2].split(",")] if len(ARGS) > 2 and ARGS[2] else [0.3, 1.0, 2.0, 4.0, 8.0]
 ALL_METHODS = len(ARGS) > 3 and ARGS[3] == "all"
+CIRCULAR = len(ARGS) > 4 and ARGS[4] == "circular"
 RESOLUTION = (480, 360)
 SAMPLES = 8
 REF_SAMPLES = 64
@@ -50,7 +52,7 @@ METHODS = [("off", None, 0), ("EdgeLight", "partial", 0)]
 if ALL_METHODS:
     METHODS += [("paper", "paper", 0), ("whole-arc", "whole", 0), ("reference integral", "quadrature", 0)]
 METHODS += [("bevel 1", None, 1), ("bevel 2", None, 2), ("bevel 4", None, 4), ("bevel 8", None, 8)]
-REF = f"reference (bevel {REF_SEGMENTS} segments; {REF_SAMPLES} spp)"
+REF = f"reference ({'circular' if CIRCULAR else 'bevel'} {REF_SEGMENTS} segments; {REF_SAMPLES} spp)"
 
 
 def render():
@@ -62,10 +64,10 @@ def render():
     return dt, dict(edgelight.engine.last_render)
 
 
-def configure(name, radius, method, segments, samples):
+def configure(name, radius, method, segments, samples, exact=False):
     s = gt_scenes.open_scene(name, radius, samples, RESOLUTION)
     if segments:
-        fillets.add_fillets(s, radius, segments)
+        fillets.add_fillets(s, radius, segments, exact)
     elif method is None:
         s.edgelight.highlights = False
     if method in (None, "partial"):
@@ -75,8 +77,8 @@ def configure(name, radius, method, segments, samples):
     return s
 
 
-def timed(name, radius, method, segments, samples, repeat):
-    configure(name, radius, method, segments, samples)
+def timed(name, radius, method, segments, samples, repeat, exact=False):
+    configure(name, radius, method, segments, samples, exact)
     render()  # warm-up: shader compiles, modifier evaluation
     runs = [render() for _ in range(repeat)]
     return statistics.median(t for t, _ in runs), runs[-1][1]
@@ -91,7 +93,7 @@ def main():
     os.makedirs(out_dir, exist_ok=True)
     rows = []
     for name, width, radius in gt_scenes.parts_and_radii(PARTS, WIDTHS, RESOLUTION):
-        t_ref, ref_rec = timed(name, radius, None, REF_SEGMENTS, REF_SAMPLES, 1)
+        t_ref, ref_rec = timed(name, radius, None, REF_SEGMENTS, REF_SAMPLES, 1, exact=CIRCULAR)
         ref = pixels(ref_rec)
         images, times = {}, {}
         for label, method, segments in METHODS:
