@@ -26,7 +26,7 @@ OUT = ARGS[0] if ARGS else os.path.join(ROOT, "out", "cycles_bevel.csv")
 PARTS = ARGS[1].split(",") if len(ARGS) > 1 and ARGS[1] else ["cube", "fandisk", "l_step", "gear"]
 WIDTHS = [float(w) for w in ARGS[2].split(",")] if len(ARGS) > 2 and ARGS[2] else [1.0, 2.0, 4.0]
 GT_DIR = ARGS[3] if len(ARGS) > 3 else os.path.join(ROOT, "out")
-RESOLUTION = (480, 360)
+RESOLUTION = gt_scenes.RESOLUTION
 SAMPLES = 64
 REF_SAMPLES = 256
 
@@ -76,7 +76,7 @@ def main():
         regions = np.load(os.path.join(GT_DIR, f"gt_{name}_{width:g}px_regions.npz"))
         tag = os.path.join(out_dir, f"cy_{name}_{width:g}px")
         s = cycles_scene(name, radius, REF_SAMPLES)
-        fillets.add_fillets(s, radius, 32)
+        fillets.add_fillets(s, radius, gt_scenes.REF_SEGMENTS)
         s.render.engine = 'CYCLES'  # add_fillets turns EdgeLight's highlights off only
         t_ref, ref = render(tag + "_reference")
         images = {}

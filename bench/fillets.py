@@ -22,8 +22,8 @@ def add_fillets(s, radius, segments, exact=False):
         bm = bmesh.new()
         bm.from_mesh(me)
         angles = [e.calc_face_angle(0.0) if len(e.link_faces) == 2 else 0.0 for e in bm.edges]
-        picked = [a > threshold for a in angles]
         bm.free()
+        picked = [a > threshold for a in angles]
         a_max = max(a for a, p in zip(angles, picked) if p)
         weights = [math.tan(0.5 * a) / math.tan(0.5 * a_max) if p else 0.0 for a, p in zip(angles, picked)]
         if hasattr(me.edges[0], "bevel_weight"):  # 3.x; 4.0+ keeps it in an edge attribute
@@ -166,14 +166,9 @@ def make_circular(ob, mod, axes, radius, tol=0.15):
     me.loops.foreach_get("vertex_index", loop_vert)
     material = np.zeros(len(me.polygons), int)
     me.polygons.foreach_get("material_index", material)
-    loop_start = np.zeros(len(me.polygons), int)
-    me.polygons.foreach_get("loop_start", loop_start)
     loop_total = np.zeros(len(me.polygons), int)
     me.polygons.foreach_get("loop_total", loop_total)
-    first = np.cumsum(loop_total) - loop_total  # each polygon's place in polygon-major order
-    tagged_loop = np.zeros(len(me.loops), bool)
-    tagged_loop[np.repeat(loop_start - first, loop_total) + np.arange(loop_total.sum())] = \
-        np.repeat(material == tag, loop_total)
+    tagged_loop = np.repeat(material == tag, loop_total)  # a new mesh keeps its loops face by face
     on_fillet_face = np.zeros(len(co), bool)
     on_fillet_face[loop_vert[tagged_loop]] = True
     on_own_face = np.zeros(len(co), bool)
@@ -224,4 +219,3 @@ def make_circular(ob, mod, axes, radius, tol=0.15):
     me.normals_split_custom_set(normals.tolist())
     me.update()
     ob.data = me
-    return int(fit.sum())

@@ -41,10 +41,10 @@ PARTS = (ARGS[1].split(",") if len(ARGS) > 1 and ARGS[1] else
 WIDTHS = [float(w) for w in ARGS[2].split(",")] if len(ARGS) > 2 and ARGS[2] else [0.3, 1.0, 2.0, 4.0, 8.0]
 ALL_METHODS = len(ARGS) > 3 and ARGS[3] == "all"
 CIRCULAR = len(ARGS) > 4 and ARGS[4] == "circular"
-RESOLUTION = (480, 360)
+RESOLUTION = gt_scenes.RESOLUTION
 SAMPLES = 8
 REF_SAMPLES = 64
-REF_SEGMENTS = 32
+REF_SEGMENTS = gt_scenes.REF_SEGMENTS
 REPEAT = 3
 
 # name, edge method (None: highlights off), bevel segments (0: the sharp mesh)

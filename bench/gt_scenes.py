@@ -21,6 +21,8 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CREASE = math.radians(30.0)
+RESOLUTION = (480, 360)  # the ground truth's frame: its regions are saved at this size
+REF_SEGMENTS = 32        # the reference fillets' segments
 MASK_DILATE = 3
 
 

@@ -21,7 +21,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "bench"))
 import fillets  # noqa: E402
 import gt_scenes  # noqa: E402
-from ground_truth import REF_SEGMENTS, RESOLUTION  # noqa: E402
+from gt_scenes import REF_SEGMENTS, RESOLUTION  # noqa: E402
 
 ARGS = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 GT_DIR = ARGS[0] if ARGS else os.path.join(ROOT, "out")

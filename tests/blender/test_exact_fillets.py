@@ -15,13 +15,9 @@ import scene_zoo as zoo
 
 sys.path.insert(0, os.path.join(helpers.ROOT, "bench"))
 import fillets  # noqa: E402
+from gt_scenes import display  # noqa: E402
 
 RESOLUTION = (480, 360)
-
-
-def display(rgb):
-    c = np.clip(rgb, 0.0, 1.0)
-    return np.where(c <= 0.0031308, 12.92 * c, 1.055 * np.power(c, 1.0 / 2.4) - 0.055)
 
 
 def valley(fold_deg, radius=0.0, arc_segments=64):
