@@ -43,7 +43,7 @@ ALL_METHODS = len(ARGS) > 3 and ARGS[3] == "all"
 CIRCULAR = len(ARGS) > 4 and ARGS[4] == "circular"
 RESOLUTION = gt_scenes.RESOLUTION
 SAMPLES = 8
-REF_SAMPLES = 64
+REF_SAMPLES = 256
 REF_SEGMENTS = gt_scenes.REF_SEGMENTS
 REPEAT = 3
 

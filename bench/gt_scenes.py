@@ -7,8 +7,8 @@ any libcgal-demo `data/meshes/NAME.off`, and the parts bench/parts.py builds.
 
 Regions: every error is reported over pixels near where the fillets change the image ("all"),
 split into the outline (the part's silhouette against the background and where one part of it
-passes in front of another: a fillet moves both inwards, which no overlay on the sharp mesh can
-follow) and the interior; the interior is broken down into corners (where rounded
+passes in front of another, with a jump in depth or along the mesh's contour edges: a fillet
+moves both inwards, which no overlay on the sharp mesh can follow) and the interior; the interior is broken down into corners (where rounded
 edges meet or a crease ends or turns: the fillets' corner patches) and the rest, along convex and
 along concave edges."""
 import math
@@ -122,8 +122,9 @@ def dilate(mask, k):
     return out
 
 
-def _project(s, points):
-    """World points -> (x, y) pixel coordinates, y up (as the render's arrays), and w > 0."""
+def _project(s, points, with_w=False):
+    """World points -> (x, y) pixel coordinates, y up (as the render's arrays), and w > 0 (and
+    w itself, the view depth, with with_w)."""
     cam = s.camera
     depsgraph = bpy.context.evaluated_depsgraph_get()
     rx, ry = s.render.resolution_x, s.render.resolution_y
@@ -132,29 +133,40 @@ def _project(s, points):
     p = np.c_[points, np.ones(len(points))] @ (proj @ view).T
     front = p[:, 3] > 0
     xy = (p[:, :2] / np.where(front, p[:, 3], 1.0)[:, None] * 0.5 + 0.5) * np.array([rx, ry])
-    return xy, front
+    return (xy, front, p[:, 3]) if with_w else (xy, front)
 
 
-def _raster(s, segments, shape):
-    """Pixels the world segments (N, 2, 3) pass through (sampled every half pixel)."""
+def _raster(s, segments, shape, inv_depth=None, depth_tol=0.02):
+    """Pixels the world segments (N, 2, 3) pass through (sampled every half pixel); with
+    inv_depth (the sharp mesh's 1 / view depth), only where they are in view: no farther than
+    the surface there by depth_tol (relative)."""
     img = np.zeros(shape, bool)
     if not len(segments):
         return img
-    a, front_a = _project(s, segments[:, 0])
-    b, front_b = _project(s, segments[:, 1])
-    for p, q in zip(a[front_a & front_b], b[front_a & front_b]):
+    a, front_a, wa = _project(s, segments[:, 0], True)
+    b, front_b, wb = _project(s, segments[:, 1], True)
+    both = front_a & front_b
+    for p, q, w0, w1 in zip(a[both], b[both], wa[both], wb[both]):
         n = int(np.ceil(np.linalg.norm(q - p) * 2.0)) + 1
-        t = np.linspace(0.0, 1.0, n)[:, None]
-        xy = np.floor(p + t * (q - p)).astype(int)
+        t = np.linspace(0.0, 1.0, n)
+        xy = np.floor(p + t[:, None] * (q - p)).astype(int)
         ok = (xy[:, 0] >= 0) & (xy[:, 0] < shape[1]) & (xy[:, 1] >= 0) & (xy[:, 1] < shape[0])
+        if inv_depth is not None:
+            w = 1.0 / ((1.0 - t) / w0 + t / w1)  # the view depth along the segment's image
+            xy, w = xy[ok], w[ok]
+            ok = inv_depth[xy[:, 1], xy[:, 0]] * w <= 1.0 + depth_tol
         img[xy[ok, 1], xy[ok, 0]] = True
     return img
 
 
 def edge_classes(s):
     """World segments of the rounded edges (faces meeting at more than 30 degrees), convex and
-    concave, and the world points where rounded edges meet or end (corners)."""
-    convex, concave, corners = [], [], []
+    concave, the world points where rounded edges meet or end (corners), and the edges with one
+    face turned to the camera and one away (the mesh's contours, rounded or not: where one part
+    of the surface passes in front of the next with no jump in depth, as a tooth's flank over
+    its root, the fillets behind move what shows past it)."""
+    convex, concave, corners, contours = [], [], [], []
+    eye = s.camera.matrix_world.translation
     for ob in (o for o in s.objects if o.type == 'MESH'):
         bm = bmesh.new()
         bm.from_mesh(ob.data)
@@ -163,6 +175,11 @@ def edge_classes(s):
         rounded = {e for e in bm.edges if len(e.link_faces) == 2 and e.calc_face_angle(0.0) > CREASE}
         for e in rounded:
             (convex if e.is_convex else concave).append([v.co[:] for v in e.verts])
+        for e in bm.edges:
+            to_eye = eye - 0.5 * (e.verts[0].co + e.verts[1].co)
+            if len(e.link_faces) == 2 and \
+                    (e.link_faces[0].normal.dot(to_eye) > 0.0) != (e.link_faces[1].normal.dot(to_eye) > 0.0):
+                contours.append([v.co[:] for v in e.verts])
         for v in bm.verts:
             mine = [e for e in v.link_edges if e in rounded]
             if not mine:
@@ -175,7 +192,7 @@ def edge_classes(s):
                 corners.append(v.co[:])
         bm.free()
     arr = lambda x: np.array(x, float).reshape(-1, *np.shape(x)[1:]) if x else np.zeros((0, 2, 3))  # noqa: E731
-    return arr(convex), arr(concave), np.array(corners, float).reshape(-1, 3)
+    return arr(convex), arr(concave), np.array(corners, float).reshape(-1, 3), arr(contours)
 
 
 def occluding_contours(inv_depth, jump=0.03):
@@ -197,10 +214,10 @@ def regions(s, changed, covered, width_px, inv_depth=None):
     mask = dilate(changed, MASK_DILATE)
     reach = MASK_DILATE + int(math.ceil(1.5 * width_px))
     edge = dilate(~covered, 1) & covered
+    convex, concave, corner_pts, contours = edge_classes(s)
     if inv_depth is not None:
-        edge |= occluding_contours(inv_depth) & covered
+        edge |= (occluding_contours(inv_depth) | _raster(s, contours, mask.shape, inv_depth)) & covered
     outline = mask & dilate(edge, reach)
-    convex, concave, corner_pts = edge_classes(s)
     corner_img = np.zeros(mask.shape, bool)
     xy, front = _project(s, corner_pts) if len(corner_pts) else (np.zeros((0, 2)), np.zeros(0, bool))
     xy = np.floor(xy[front]).astype(int)

@@ -1,6 +1,24 @@
 /* Where a rounded edge's band lies across its projected edge line, and which part of its arc
  * one pixel sees (docs/highlight_math.md, section 15). Needs highlight_arc.glsl. */
 
+/* The square pixel's footprint across a line of unit screen normal n (docs/highlight_math.md,
+ * "The pixel's footprint across the line"): its extent across the line is the sum of two uniform
+ * spans, a = max(|n.x|, |n.y|) and b = min(|n.x|, |n.y|), a trapezoid 1 to sqrt(2) wide. It is
+ * taken as two boxes of width a at +-b/4 from the pixel's centre, or one at the centre where b
+ * is small (an axis-aligned line's exact box). Returns (a, the boxes' offset; 0: one box). */
+vec2 el_footprint(vec2 n)
+{
+  float a = max(abs(n.x), abs(n.y)), b = min(abs(n.x), abs(n.y));
+  return vec2(a, b > 0.15 ? 0.25 * b : 0.0);
+}
+
+/* How far the footprint reaches across the line from the pixel's centre. */
+float el_footprint_reach(vec2 n)
+{
+  vec2 fp = el_footprint(n);
+  return 0.5 * fp.x + fp.y;
+}
+
 /* Arc normal at angle u from N1. */
 vec3 el_arc_normal(ElArc g, float u)
 {

@@ -3,23 +3,23 @@
  * really lies, and the pixel is shaded with the part of the arc whose image it covers. Needs
  * highlight_arc.glsl, edge_shading.glsl and edge_band.glsl. */
 
-/* The share of the band [b0, b1]'s part in the pixel centred at `across` (its box across the
- * line, a pixel wide) that lies on N1's face's side of the line (at 0; edge_far.z: the side N1's
- * face lies on in the image). */
-float el_share_on_n1(float across, float b0, float b1)
-{
-  float pa = max(across - 0.5, b0), pb = min(across + 0.5, b1);
-  float on1 = edge_far.z >= 0.0 ? pb - max(pa, 0.0) : min(pb, 0.0) - pa;
-  return pb > pa ? clamp(on1 / (pb - pa), 0.0, 1.0) : 0.5;
-}
-
 /* Premultiplied (W Is, W) of the pixel whose centre is `pc`, at edge point X seen along unit V;
  * `across`: the pixel centre's distance from the edge line in pixels (along edge_screen.zw).
- * Zero where the pixel shows none of the band. share1: the share of the band's part in the
- * pixel that lies on N1's face's side of the line (el_faces_under_band). */
-vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, out float share1)
+ * Zero where the pixel shows none of the band. The pixel is a square: its footprint across the
+ * line is one or two boxes (el_footprint), each shaded with the part of the arc whose image it
+ * covers. share1: the share of the band's part in the pixel that lies on N1's face's side of the
+ * line (at 0; edge_far.z: the side N1's face lies on in the image), pixel1 the pixel's own share
+ * there (el_faces_under_band). */
+vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, out float share1, out float pixel1)
 {
   share1 = 0.5;
+  vec2 fp = el_footprint(edge_screen.zw);
+  int boxes = fp.y > 0.0 ? 2 : 1;
+  pixel1 = 0.0;
+  for (int k = 0; k < boxes; k++) {
+    pixel1 += clamp(0.5 + (across + (2.0 * float(k) - 1.0) * fp.y) * edge_far.z / fp.x, 0.0, 1.0);
+  }
+  pixel1 /= float(boxes);
   ElArc g = el_arc(edge_dir, edge_n1, edge_n2, V);
   float s = sqrt(dot(g.view, g.view)); /* |E x V| */
   if (!(g.width > 0.0) || !(s > 0.0)) {
@@ -33,27 +33,37 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
   float side = dot((q1.xy / q1.w - q0.xy / q0.w) * frame.viewport.xy, edge_screen.zw) < 0.0 ? -1.0 : 1.0;
   vec2 ends = el_band_ends(g, P, edge_fold) * (side * edge_radius / world_per_px);
   float b0 = min(ends.x, ends.y), b1 = max(ends.x, ends.y);
-  float pa = max(across - 0.5, b0), pb = min(across + 0.5, b1);
-  float cover = clamp(pb - pa, 0.0, 1.0);
   /* The band's ends on the face this pixel lies over (band_ends.py): the pixel's centre on the
    * body's side of each cut. Two bands meeting on a cut then split its pixels exactly (a
    * filtered cut would leave a seam: bands blend over each other, they do not add); the
    * jittered samples antialias the cut as they do the outline. */
   bool on_f1 = across * edge_far.z >= 0.0;
   vec2 cut0 = on_f1 ? edge_cut0.xy : edge_cut0.zw, cut1 = on_f1 ? edge_cut1.xy : edge_cut1.zw;
-  if (dot(pc - edge_screen.xy, cut0) < 0.0 || dot(pc - edge_far.xy, cut1) < 0.0) {
+  if (dot(pc - edge_screen.xy, cut0) < 0.0 || dot(pc - edge_far.xy, cut1) < 0.0 || !(b1 > b0)) {
     return vec4(0.0);
   }
-  float W = clamp(tint.w * cover, 0.0, 1.0) * ramp;
-  if (!(W > 0.0 && b1 > b0)) {
+  /* Per box: its covered part [pa, pb] of the band, as a share of the box, and that part's arc
+   * (fractions of the band from vis.lo's end). */
+  float cover = 0.0, on1 = 0.0;
+  vec3 col = vec3(0.0);
+  for (int k = 0; k < boxes; k++) {
+    float c = across + (2.0 * float(k) - 1.0) * fp.y; /* the box's centre (fp.y = 0: one box) */
+    float pa = max(c - 0.5 * fp.x, b0), pb = min(c + 0.5 * fp.x, b1);
+    if (pb > pa) {
+      float part = (pb - pa) / fp.x;
+      cover += part;
+      on1 += max(edge_far.z >= 0.0 ? pb - max(pa, 0.0) : min(pb, 0.0) - pa, 0.0) / fp.x;
+      float fa = (pa - ends.x) / (ends.y - ends.x), fb = (pb - ends.x) / (ends.y - ends.x);
+      ElArc sub = el_sub_arc(g, clamp(min(fa, fb), 0.0, 1.0), clamp(max(fa, fb), 0.0, 1.0));
+      col += part * el_edge_colour(sub, X, V, edge_dir);
+    }
+  }
+  float W = clamp(tint.w * cover / float(boxes), 0.0, 1.0) * ramp;
+  if (!(W > 0.0)) {
     return vec4(0.0);
   }
-  share1 = el_share_on_n1(across, b0, b1);
-  /* Fractions of the band from vis.lo's end. */
-  float fa = (pa - ends.x) / (ends.y - ends.x), fb = (pb - ends.x) / (ends.y - ends.x);
-  ElArc sub = el_sub_arc(g, clamp(min(fa, fb), 0.0, 1.0), clamp(max(fa, fb), 0.0, 1.0));
-  vec3 col = el_edge_colour(sub, X, V, edge_dir);
-  return vec4(col * W, W);
+  share1 = clamp(on1 / cover, 0.0, 1.0);
+  return vec4(col / cover * W, W);
 }
 
 /* What the band's blend over the pixel gets wrong about the sharp faces it replaces, to add to
@@ -67,11 +77,10 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
  * silhouette's far side is whatever lies behind it. Where the line crosses the pixel, `far` is
  * the colour along the edge of the face on the other side of the line from the pixel's centre
  * and `near_share` the pixel's share on the centre's side; elsewhere near_share is 1. */
-vec3 el_faces_under_band(vec3 X, vec3 V, float across, float share1, float W, out vec3 far, out float near_share)
+vec3 el_faces_under_band(vec3 X, vec3 V, float f1, float share1, float W, out vec3 far, out float near_share)
 {
   far = vec3(0.0);
   near_share = 1.0;
-  float f1 = clamp(0.5 + across * edge_far.z, 0.0, 1.0);
   if (!(edge_far.w > 0.5) || f1 == share1) {
     return vec3(0.0);
   }

@@ -84,8 +84,8 @@ void main()
     discard;
   }
 
-  float share1;
-  vec4 result = el_band_pixel(pc, X, V, world_per_px, across, share1);
+  float share1, pixel1;
+  vec4 result = el_band_pixel(pc, X, V, world_per_px, across, share1, pixel1);
   if (!(result.w > 0.0)) {
     discard;
   }
@@ -94,7 +94,7 @@ void main()
    * surface's faces are not shaded by el_face_colour, so its bands blend over the mean). */
   vec3 far;
   float near_share;
-  result.rgb += el_faces_under_band(X, V, across, share1, result.w, far, near_share);
+  result.rgb += el_faces_under_band(X, V, pixel1, share1, result.w, far, near_share);
 #ifdef EL_EDGE_IDS
   /* Where the line crosses a pixel that shows only the two faces, the pixel is drawn whole: the
    * band and what it leaves of each face, the face at the centre in the first sample's colour

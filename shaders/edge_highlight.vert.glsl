@@ -81,9 +81,9 @@ vec3 el_line_point(vec3 w0, vec3 w1, float iw0, float iw1, float lambda)
 
 /* Edge highlight pass: one screen-space quad per rounded edge (no wide GL lines, no geometry
  * shader). corner.x picks the end (0: p0, 1: p1), corner.y the side (-1, +1), corner.z is the
- * radius. The quad reaches half a pixel past the rounded edge's projected band on each side: the
- * support of the fragment shader's box-filtered coverage, so every pixel the band touches runs it
- * and no other does. */
+ * radius. The quad reaches the pixel's footprint past the rounded edge's projected band on each
+ * side: the support of the fragment shader's filtered coverage, so every pixel the band touches
+ * runs it and no other does. */
 void main()
 {
   vec3 w0 = (model * vec4(p0, 1.0)).xyz;
@@ -151,13 +151,14 @@ void main()
 
   /* The quad's sides, the same offsets from the line at both ends: a parallelogram, so that
    * edge_point interpolates to the foot of each pixel's perpendicular on the line (a trapezoid
-   * would skew it). Half a pixel past where the band lies (edge_band_extent.glsl), within its
-   * reach (the larger of the two ends'). Fewer pixels run the fragment shader; none it would
-   * light is left out (tests/native/render/test_edge_culling.cpp). */
+   * would skew it). The pixel's footprint past where the band lies (edge_band_extent.glsl),
+   * within its reach (the larger of the two ends'). Fewer pixels run the fragment shader; none it
+   * would light is left out (tests/native/render/test_edge_culling.cpp). */
   float half_px = max(el_half_width_px(w0), el_half_width_px(w1));
   vec2 sides = el_quad_sides(w0, w1, c0, c1, across, half_px - 0.5 - 1.0 / 64.0);
   float lo = sides.x, hi = sides.y;
-  float offset = corner.y < 0.0 ? lo - 0.5 - 1.0 / 64.0 : hi + 0.5 + 1.0 / 64.0;
+  float pad = el_footprint_reach(across) + 1.0 / 64.0; /* the pixel's footprint (edge_band.glsl) */
+  float offset = corner.y < 0.0 ? lo - pad : hi + pad;
 
   /* Past each end as far as a cut there leans outwards on screen (up to twice the band's widest
    * reach, whichever sides the quad was fitted to; an edge seen end-on, under a pixel long, has
@@ -165,7 +166,7 @@ void main()
    * still a parallelogram, so edge_point still interpolates to each pixel's foot on the line. A
    * band wider than its edge is long (a short piece of a rim) leans past it by more than the
    * edge's length. */
-  float side_px = max(abs(lo), abs(hi)) + 0.5;
+  float side_px = max(abs(lo), abs(hi)) + pad;
   float most = 2.0 * (half_px + 0.5);
   float cap = max(len >= 1.0 ? most : min(most, len), 1.0 / 64.0);
   float past0 = el_reach_past(edge_cut0.xy, edge_cut0.zw, -dir, across, side_px, cap) / max(len, 1e-6);

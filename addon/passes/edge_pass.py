@@ -7,7 +7,7 @@ from .surface_pass import SURFACE_MODES, shading_uniforms
 
 def draw_highlights(targets, scene, gpu_meshes, ubo, stats):
     """Each instance's rounded edges into targets.highlight (the first sample's: the band's
-    coverage is box-filtered across the edge analytically, docs/addon.md); counted in
+    coverage is filtered across the edge analytically, docs/addon.md); counted in
     stats.edges_drawn."""
     tex, info = table.table()
     # The table layout is fixed in the program (highlight_arc.glsl); the surface pass wrote ids:

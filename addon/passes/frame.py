@@ -65,7 +65,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         if s == 0 and first_sample:
             first_sample()
         # The edge and line passes run once, on the unjittered first sample: their coverage is
-        # box-filtered across the edge or stroke analytically, so later samples reuse them and
+        # filtered across the edge or stroke analytically, so later samples reuse them and
         # only the surface is re-jittered (docs/addon.md).
         if s == 0:
             if settings.highlights and not whiteout:

@@ -5,13 +5,25 @@
 #undef el_quad_sides
 #undef el_band_pixel
 
-vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, out float share1)
+/* The share of the band [b0, b1]'s part in the pixel centred at `across` (its box across the
+ * line, a pixel wide) that lies on N1's face's side of the line (at 0; edge_far.z: the side N1's
+ * face lies on in the image). */
+float el_share_on_n1(float across, float b0, float b1)
+{
+  float pa = max(across - 0.5, b0), pb = min(across + 0.5, b1);
+  float on1 = edge_far.z >= 0.0 ? pb - max(pa, 0.0) : min(pb, 0.0) - pa;
+  return pb > pa ? clamp(on1 / (pb - pa), 0.0, 1.0) : 0.5;
+}
+
+vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, out float share1, out float pixel1)
 {
   if (EL_EDGE_METHOD == EL_METHOD_PARTIAL || EL_EDGE_METHOD == EL_METHOD_QUADRATURE) {
-    return el_partial_band_pixel(pc, X, V, world_per_px, across, share1);
+    return el_partial_band_pixel(pc, X, V, world_per_px, across, share1, pixel1);
   }
-  /* The paper's line replaces nothing but the pixel's mean (no faces-under correction). */
-  share1 = clamp(0.5 + across * edge_far.z, 0.0, 1.0);
+  /* These methods' pixel is a box a pixel wide across the line. The paper's line replaces
+   * nothing but the pixel's mean (no faces-under correction). */
+  pixel1 = clamp(0.5 + across * edge_far.z, 0.0, 1.0);
+  share1 = pixel1;
   /* The whole-arc and paper methods: a band of projected width w (pixels) centred on the edge
    * line, the pixel's box-filtered coverage of it, and the whole visible arc's mean colour. It
    * is exact only if the band were centred and fell within one pixel; measured against fillets
