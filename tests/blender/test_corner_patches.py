@@ -18,15 +18,12 @@ import scene_zoo as zoo
 sys.path.insert(0, os.path.join(helpers.ROOT, "bench"))
 import fillets  # noqa: E402
 import parts  # noqa: E402
+from gt_scenes import display  # noqa: E402
 
 RESOLUTION = (480, 360)
 CAMERA = (5.0, -6.5, 5.2)
 CORNER = (1.0, -1.0, 1.0)  # the corner facing the camera, inside the box's image
 
-
-def display(rgb):
-    c = np.clip(rgb, 0.0, 1.0)
-    return np.where(c <= 0.0031308, 12.92 * c, 1.055 * np.power(c, 1.0 / 2.4) - 0.055)
 
 
 def radius_for(width_px):

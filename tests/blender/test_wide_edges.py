@@ -16,6 +16,7 @@ import helpers
 sys.path.insert(0, os.path.join(helpers.ROOT, "bench"))
 import edge_methods  # noqa: E402
 import fillets  # noqa: E402
+from gt_scenes import display  # noqa: E402
 
 A, B = np.array((-1.0, -1.0, 1.0)), np.array((1.0, -1.0, 1.0))  # cube sample's glinting edge
 N1, N2 = np.array((0.0, 0.0, 1.0)), np.array((0.0, -1.0, 0.0))  # top face, front face
@@ -33,10 +34,6 @@ IMPROVEMENT = 5.0
 PARTIAL_ARC_TOLERANCE = 2e-3
 FOOTPRINT_RMSE = 0.008  # measured 0.0044; boxed a pixel wide, 0.0139
 
-
-def display(rgb):
-    c = np.clip(rgb, 0.0, 1.0)
-    return np.where(c <= 0.0031308, 12.92 * c, 1.055 * np.power(c, 1.0 / 2.4) - 0.055)
 
 
 def with_method(method, fn):
