@@ -13,13 +13,7 @@
 vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, out float share1, out float pixel1)
 {
   share1 = 0.5;
-  vec2 fp = el_footprint(edge_screen.zw);
-  int boxes = fp.y > 0.0 ? 2 : 1;
-  pixel1 = 0.0;
-  for (int k = 0; k < boxes; k++) {
-    pixel1 += clamp(0.5 + (across + (2.0 * float(k) - 1.0) * fp.y) * edge_far.z / fp.x, 0.0, 1.0);
-  }
-  pixel1 /= float(boxes);
+  pixel1 = 0.5;
   ElArc g = el_arc(edge_dir, edge_n1, edge_n2, V);
   float s = sqrt(dot(g.view, g.view)); /* |E x V| */
   if (!(g.width > 0.0) || !(s > 0.0)) {
@@ -42,12 +36,15 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
   if (dot(pc - edge_screen.xy, cut0) < 0.0 || dot(pc - edge_far.xy, cut1) < 0.0 || !(b1 > b0)) {
     return vec4(0.0);
   }
-  /* Per box: its covered part [pa, pb] of the band, as a share of the box, and that part's arc
-   * (fractions of the band from vis.lo's end). */
-  float cover = 0.0, on1 = 0.0;
+  /* Per box: its own share on N1's side, its covered part [pa, pb] of the band as a share of
+   * the box, and that part's arc (fractions of the band from vis.lo's end). */
+  vec2 fp = el_footprint(edge_screen.zw);
+  int boxes = fp.y > 0.0 ? 2 : 1;
+  float cover = 0.0, on1 = 0.0, box1 = 0.0;
   vec3 col = vec3(0.0);
   for (int k = 0; k < boxes; k++) {
     float c = across + (2.0 * float(k) - 1.0) * fp.y; /* the box's centre (fp.y = 0: one box) */
+    box1 += clamp(0.5 + c * edge_far.z / fp.x, 0.0, 1.0);
     float pa = max(c - 0.5 * fp.x, b0), pb = min(c + 0.5 * fp.x, b1);
     if (pb > pa) {
       float part = (pb - pa) / fp.x;
@@ -63,6 +60,7 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
     return vec4(0.0);
   }
   share1 = clamp(on1 / cover, 0.0, 1.0);
+  pixel1 = box1 / float(boxes);
   return vec4(col / cover * W, W);
 }
 
