@@ -4,19 +4,28 @@
 /* The square pixel's footprint across a line of unit screen normal n (docs/highlight_math.md,
  * "The pixel's footprint across the line"): its extent across the line is the sum of two uniform
  * spans, a = max(|n.x|, |n.y|) and b = min(|n.x|, |n.y|), a trapezoid 1 to sqrt(2) wide. It is
- * taken as two boxes of width a at +-b/4 from the pixel's centre, or one at the centre where b
- * is small (an axis-aligned line's exact box). Returns (a, the boxes' offset; 0: one box). */
-vec2 el_footprint(vec2 n)
+ * taken as boxes of width a centred on the midpoints of `count` equal parts of b (the midpoint
+ * rule: the trapezoid's ramps become stairs of at most EL_FOOTPRINT_STEP), one box at the centre
+ * where b is that small (an axis-aligned line's exact box). Returns (a, b, count). */
+const float EL_FOOTPRINT_STEP = 0.18;
+
+vec3 el_footprint(vec2 n)
 {
   float a = max(abs(n.x), abs(n.y)), b = min(abs(n.x), abs(n.y));
-  return vec2(a, b > 0.15 ? 0.25 * b : 0.0);
+  return vec3(a, b, clamp(ceil(b / EL_FOOTPRINT_STEP), 1.0, 4.0));
+}
+
+/* The centre of box k of the footprint fp, from the pixel's centre across the line. */
+float el_footprint_box(vec3 fp, int k)
+{
+  return ((float(k) + 0.5) / fp.z - 0.5) * fp.y;
 }
 
 /* How far the footprint reaches across the line from the pixel's centre. */
 float el_footprint_reach(vec2 n)
 {
-  vec2 fp = el_footprint(n);
-  return 0.5 * fp.x + fp.y;
+  vec3 fp = el_footprint(n);
+  return 0.5 * fp.x - el_footprint_box(fp, 0);
 }
 
 /* Arc normal at angle u from N1. */

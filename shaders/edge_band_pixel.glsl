@@ -6,7 +6,7 @@
 /* Premultiplied (W Is, W) of the pixel whose centre is `pc`, at edge point X seen along unit V;
  * `across`: the pixel centre's distance from the edge line in pixels (along edge_screen.zw).
  * Zero where the pixel shows none of the band. The pixel is a square: its footprint across the
- * line is one or two boxes (el_footprint), each shaded with the part of the arc whose image it
+ * line is one to four boxes (el_footprint), each shaded with the part of the arc whose image it
  * covers. share1: the share of the band's part in the pixel that lies on N1's face's side of the
  * line (at 0; edge_far.z: the side N1's face lies on in the image), pixel1 the pixel's own share
  * there (el_faces_under_band). */
@@ -38,12 +38,12 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
   }
   /* Per box: its own share on N1's side, its covered part [pa, pb] of the band as a share of
    * the box, and that part's arc (fractions of the band from vis.lo's end). */
-  vec2 fp = el_footprint(edge_screen.zw);
-  int boxes = fp.y > 0.0 ? 2 : 1;
+  vec3 fp = el_footprint(edge_screen.zw);
+  int boxes = int(fp.z);
   float cover = 0.0, on1 = 0.0, box1 = 0.0;
   vec3 col = vec3(0.0);
   for (int k = 0; k < boxes; k++) {
-    float c = across + (2.0 * float(k) - 1.0) * fp.y; /* the box's centre (fp.y = 0: one box) */
+    float c = across + el_footprint_box(fp, k);
     box1 += clamp(0.5 + c * edge_far.z / fp.x, 0.0, 1.0);
     float pa = max(c - 0.5 * fp.x, b0), pb = min(c + 0.5 * fp.x, b1);
     if (pb > pa) {

@@ -84,9 +84,9 @@ class ExactFillets(unittest.TestCase):
     quarter of the way across, seen across the valley and at an angle that lays its line
     diagonally on screen: the band against the exact fillet, measured across the middle of the
     valley. Measured on llvmpipe (RMSE on display values, Blender 3.4; 5.x's node-tree material
-    gives lower numbers all round): 0.0019-0.0023 seen across, 0.0020-0.0039 diagonally (0.0034-
-    0.0040 while the band was filtered by a box a pixel wide: docs/highlight_math.md, "The pixel's
-    footprint across the line"); the Bevel modifier's fillets of the
+    gives lower numbers all round): 0.0019-0.0024 seen across, 0.0018-0.0033 diagonally (0.0020-
+    0.0039 with the pixel's footprint as two boxes, 0.0034-0.0040 as a box a pixel wide:
+    docs/highlight_math.md, "The pixel's footprint across the line"); the Bevel modifier's fillets of the
     reference are off the exact ones by 0.0021-0.0066, more at 3 px than at 1 px (its profile is a
     circle at 90 degrees only), and by 0.0010-0.0023 once moved onto the circles (bench/fillets.py,
     exact: the ground truth's circular reference; the rest is the 64 samples' noise). Laid the
