@@ -138,7 +138,9 @@ class PartialArcMatchesQuadrature(unittest.TestCase):
         normals = np.cos(u)[:, None] * N1 + np.sin(u)[:, None] * b1
         C = N1 + N2  # (N1 + N2) / (1 + N1.N2): the fillet's axis is at c - r C
         a, b = max(abs(nrm)), min(abs(nrm))
-        count = min(max(math.ceil(b / 0.18), 1), 4)  # boxes at the midpoints of equal parts of b
+        # Boxes at the midpoints of equal parts of b, each at most EL_FOOTPRINT_STEP (edge_band.glsl)
+        # wide, one to four.
+        count = min(max(math.ceil(b / 0.18), 1), 4)
         offsets = ((np.arange(count) + 0.5) / count - 0.5) * b
         self.assertGreater(count, 1, "the edge is diagonal on screen: the footprint is several boxes")
         checked, worst = 0, 0.0
