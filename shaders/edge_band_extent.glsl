@@ -32,9 +32,10 @@ vec2 el_band_px(vec3 at, vec4 clip_at, vec2 across)
 }
 
 /* The quad's sides across the edge line w0 -> w1 (clip positions c0, c1; pixels along `across`,
- * low and high, before the coverage filter's half pixel): where the band really lies (mostly on
- * one side of the line), the union of its extents at both ends, widened by how far it can move
- * as the view ray turns along the edge, within +-reach (the band's widest). */
+ * low and high, before the pixel's footprint is added: el_footprint_reach): where the band
+ * really lies (mostly on one side of the line), the union of its extents at both ends, widened
+ * by how far it can move as the view ray turns along the edge, within +-reach (the band's
+ * widest). */
 vec2 el_quad_sides(vec3 w0, vec3 w1, vec4 c0, vec4 c1, vec2 across, float reach)
 {
   vec2 b0 = el_band_px(w0, c0, across), b1 = el_band_px(w1, c1, across);

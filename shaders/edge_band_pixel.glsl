@@ -39,7 +39,7 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
   /* Per box: its own share on N1's side, its covered part [pa, pb] of the band as a share of
    * the box, and that part's arc (fractions of the band from vis.lo's end). */
   vec3 fp = el_footprint(edge_screen.zw);
-  int boxes = int(fp.z);
+  int boxes = clamp(int(fp.z), 1, 4); /* bounded even for a NaN normal */
   float cover = 0.0, on1 = 0.0, box1 = 0.0;
   vec3 col = vec3(0.0);
   for (int k = 0; k < boxes; k++) {
