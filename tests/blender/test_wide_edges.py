@@ -128,10 +128,8 @@ class PartialArcMatchesQuadrature(unittest.TestCase):
         """At three turns of the camera about its axis, so that the glint edge's line lies 16, 28
         and 40 degrees off the rows: the pixel's footprint across it is two, three and four
         boxes."""
-        counts = set()
-        for roll, every in ((0.0, 1), (-12.0, 3), (12.0, 3)):
-            with self.subTest(roll=roll):
-                counts.add(self.check(roll, every))
+        # No subTest: a view skipped for want of a GPU must skip the whole test.
+        counts = {self.check(roll, every) for roll, every in ((0.0, 1), (-12.0, 3), (12.0, 3))}
         self.assertEqual(counts, {2, 3, 4})
 
     def check(self, roll, every):
