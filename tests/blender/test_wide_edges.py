@@ -30,7 +30,7 @@ OFFSETS = np.arange(-12.0, 12.5, 1.0)
 PROFILE_RMSE = 0.02
 IMPROVEMENT = 5.0
 # Per-pixel colour against the quadrature below, relative to the pixel's colour: the float path
-# (about 1e-4) plus the quadrature's own step. Measured: 9.5e-4 (specular peaks are steep at
+# (about 1e-4) plus the quadrature's own step. Measured: 9.5e-4 to 1.0e-3 (specular peaks are steep at
 # the pixel's borders).
 PARTIAL_ARC_TOLERANCE = 2e-3
 FOOTPRINT_RMSE = 0.0035  # measured 0.0023; two boxes 0.0044, boxed a pixel wide 0.0139
