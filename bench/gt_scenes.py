@@ -8,9 +8,9 @@ any libcgal-demo `data/meshes/NAME.off`, and the parts bench/parts.py builds.
 Regions: every error is reported over pixels near where the fillets change the image ("all"),
 split into the outline (the part's silhouette against the background and where one part of it
 passes in front of another, with a jump in depth or along the mesh's contour edges: a fillet
-moves both inwards, which no overlay on the sharp mesh can follow) and the interior; the interior is broken down into corners (where rounded
-edges meet or a crease ends or turns: the fillets' corner patches) and the rest, along convex and
-along concave edges."""
+moves both inwards, which no overlay on the sharp mesh can follow) and the interior; the
+interior is broken down into corners (where rounded edges meet or a crease ends or turns: the
+fillets' corner patches) and the rest, along convex and along concave edges."""
 import math
 import os
 import tarfile

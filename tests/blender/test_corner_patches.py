@@ -25,7 +25,6 @@ CAMERA = (5.0, -6.5, 5.2)
 CORNER = (1.0, -1.0, 1.0)  # the corner facing the camera, inside the box's image
 
 
-
 def radius_for(width_px):
     """The radius whose image is width_px pixels at the origin (r f / d), 50 mm lens."""
     return width_px * float(np.linalg.norm(CAMERA)) / (50.0 / 36.0 * RESOLUTION[0])

@@ -36,7 +36,6 @@ PARTIAL_ARC_TOLERANCE = 2e-3
 FOOTPRINT_RMSE = 0.0035  # measured 0.0023; two boxes 0.0044, boxed a pixel wide 0.0139
 
 
-
 def with_method(method, fn):
     """Runs fn with the edge pass's method: "partial" is the add-on's own, the others are the
     benchmarks' variants (bench/edge_methods.py)."""
