@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import band_ends, corner_patches, native, radius_clamp
-from .edge_data import shading_normals
+from .edge_data import mean_and_turn, shading_normals
 from .lines import surface_ids
 from .radius_clamp_notes import record_radius_clamps
 
@@ -23,6 +23,7 @@ class EdgeSet:
     faces: np.ndarray = None           # (N, 2) float32 surface ids of its two faces (band visibility)
     ends: np.ndarray = None            # (N, 4) float32 where its band ends on each face (band_ends.py)
     corners: object = None             # corner_patches.Corners where three of its edges meet (the first's slot)
+    turn: np.ndarray = None            # (N, 6) float32 how N1, N2 change along it (edge_data.mean_and_turn)
 
     def __len__(self):
         return len(self.radius)
@@ -100,11 +101,11 @@ def choose_edges(d, shading):
     for slot in np.unique(slot_a[chosen]):
         sel = np.flatnonzero(chosen & (slot_a == slot))
         faces = np.stack([face_a[sel], face_b[sel]], axis=1)
-        shaded = shading_normals(d, sel, normals)
+        shaded, turn = mean_and_turn(shading_normals(d, sel, normals))
         out[int(slot)] = EdgeSet(positions[edges[sel, 0]], positions[edges[sel, 1]],
                                  np.ascontiguousarray(shaded[:, :3]), np.ascontiguousarray(shaded[:, 3:]),
                                  radius[sel], surface_ids(d, faces),
                                  band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen,
                                                       ~stop, d.edge_polygons()),
-                                 corners.subset(np.flatnonzero(corner_slot == slot)))
+                                 corners.subset(np.flatnonzero(corner_slot == slot)), turn)
     return out

@@ -28,6 +28,33 @@ float el_footprint_reach(vec2 n)
   return 0.5 * fp.x - el_footprint_box(fp, 0);
 }
 
+/* The rounded edge's frame at line parameter t (0 at its first end, 1 at its second): the
+ * normals its arc runs between there and the fillet's axis (docs/highlight_math.md, "The arc's
+ * ends on smooth-shaded faces"). A smooth face's shading normal changes along the edge (Blender
+ * interpolates its corner normals), so the arc does: N_i(t) = normalize(edge_n_i + (t - 1/2)
+ * edge_turn_i). A rolling ball touches each face where the face's normal points at its centre,
+ * so its axis is square to both normals: it is taken as the edge's direction turned as N1 x N2
+ * turns away from its value at the mean normals (el_arc projects the normals square to it).
+ * Where neither normal turns, the frame is the edge's own, exactly. */
+void el_edge_frame(float t, out vec3 E, out vec3 n1, out vec3 n2)
+{
+  E = edge_dir;
+  n1 = edge_n1;
+  n2 = edge_n2;
+  if (edge_turn1 != vec3(0.0) || edge_turn2 != vec3(0.0)) {
+    float d = clamp(t, 0.0, 1.0) - 0.5;
+    n1 = el_safe_normalize(edge_n1 + d * edge_turn1);
+    n2 = el_safe_normalize(edge_n2 + d * edge_turn2);
+    /* Over |N1 x N2| = sin(fold) at most, so the turn the cross product gives the axis fades
+     * out on folds under about twice the normals' turn (or within it of 180 degrees), where it
+     * is ill-conditioned and the band thin: there the axis stays near the edge. */
+    vec3 a = cross(edge_n1, edge_n2);
+    float den = max(length(a), 2.0 * max(length(edge_turn1), length(edge_turn2)));
+    float sg = dot(a, edge_dir) < 0.0 ? -1.0 : 1.0;
+    E = el_safe_normalize(el_safe_normalize(edge_dir) + (cross(n1, n2) - a) * (sg / den));
+  }
+}
+
 /* Arc normal at angle u from N1. */
 vec3 el_arc_normal(ElArc g, float u)
 {

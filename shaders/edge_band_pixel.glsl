@@ -14,13 +14,15 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
 {
   share1 = 0.5;
   pixel1 = 0.5;
-  ElArc g = el_arc(edge_dir, edge_n1, edge_n2, V);
+  vec3 E, n1, n2;
+  el_edge_frame(edge_t, E, n1, n2);
+  ElArc g = el_arc(E, n1, n2, V);
   float s = sqrt(dot(g.view, g.view)); /* |E x V| */
   if (!(g.width > 0.0) || !(s > 0.0)) {
     return vec4(0.0);
   }
   float ramp = el_axial_ramp(s);
-  vec3 P = el_safe_normalize(cross(el_safe_normalize(edge_dir), V));
+  vec3 P = el_safe_normalize(cross(el_safe_normalize(E), V));
   /* Which way P points on screen (the sign of its image along edge_screen's normal). */
   vec4 q0 = frame.projection * (frame.view * vec4(X, 1.0));
   vec4 q1 = frame.projection * (frame.view * vec4(X + P * world_per_px, 1.0));
@@ -52,7 +54,7 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
       on1 += max(edge_far.z >= 0.0 ? pb - max(pa, 0.0) : min(pb, 0.0) - pa, 0.0) / fp.x;
       float fa = (pa - ends.x) / (ends.y - ends.x), fb = (pb - ends.x) / (ends.y - ends.x);
       ElArc sub = el_sub_arc(g, clamp(min(fa, fb), 0.0, 1.0), clamp(max(fa, fb), 0.0, 1.0));
-      col += part * el_edge_colour(sub, X, V, edge_dir);
+      col += part * el_edge_colour(sub, X, V, E);
     }
   }
   float W = clamp(tint.w * cover / float(boxes), 0.0, 1.0) * ramp;
@@ -72,9 +74,11 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
  * on N1's side) the difference is W (f1 - s1) (I1 - I2): zero where the band splits as the
  * pixel does, large where it lies on a face lit past white and the pixel straddles a dim one.
  * Only where both faces face the eye, one on each side of the line (edge_far.w); a
- * silhouette's far side is whatever lies behind it. Where the line crosses the pixel, `far` is
- * the colour along the edge of the face on the other side of the line from the pixel's centre
- * and `near_share` the pixel's share on the centre's side; elsewhere near_share is 1. */
+ * silhouette's far side is whatever lies behind it. I1 and I2 are the faces' colours with the
+ * normals they are shaded with at the pixel's place along the edge (el_edge_frame). Where the
+ * line crosses the pixel, `far` is the colour along the edge of the face on the other side of
+ * the line from the pixel's centre and `near_share` the pixel's share on the centre's side;
+ * elsewhere near_share is 1. */
 vec3 el_faces_under_band(vec3 X, vec3 V, float f1, float share1, float W, out vec3 far, out float near_share)
 {
   far = vec3(0.0);
@@ -82,7 +86,9 @@ vec3 el_faces_under_band(vec3 X, vec3 V, float f1, float share1, float W, out ve
   if (!(edge_far.w > 0.5) || f1 == share1) {
     return vec3(0.0);
   }
-  vec3 I1 = el_face_colour(normalize(edge_n1), X, V), I2 = el_face_colour(normalize(edge_n2), X, V);
+  vec3 E, n1, n2;
+  el_edge_frame(edge_t, E, n1, n2);
+  vec3 I1 = el_face_colour(normalize(n1), X, V), I2 = el_face_colour(normalize(n2), X, V);
   if (f1 > 0.0 && f1 < 1.0) {
     bool centre_on_1 = f1 >= 0.5;
     far = centre_on_1 ? I2 : I1;

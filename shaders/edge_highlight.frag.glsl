@@ -55,8 +55,8 @@ void main()
   float bias = own ? 3.0e38 : 0.5 * world_per_px + 1e-5 * dist;
   /* Over another face of its own object: the band lies on the plane of the face on this
    * pixel's side (a fillet runs on across a smooth patch's facets, as far as the radius clamp
-   * lets it; the plane through the edge square to the normal the arc starts from, which is the
-   * face's shading normal along the edge, within 20 degrees of its own), so that plane's depth
+   * lets it; the plane through the edge square to the face's mean shading normal along the
+   * edge, within 20 degrees of its own), so that plane's depth
    * here is what a surface must not be nearer than; the edge line's depth would hide wide bands
    * on facets that turn toward the eye. Over another object the edge line's depth decides, as a
    * silhouette face's plane continued past the outline can lie far behind it. */

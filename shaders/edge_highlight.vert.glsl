@@ -89,8 +89,13 @@ void main()
   vec3 w0 = (model * vec4(p0, 1.0)).xyz;
   vec3 w1 = (model * vec4(p1, 1.0)).xyz;
   edge_faces = faces;
-  edge_n1 = el_transform_normal(model, n1);
-  edge_n2 = el_transform_normal(model, n2);
+  /* Each end's normals transformed as the surface pass transforms its corner normals (each
+   * normalized before the blend along the edge), then the world mean and turn from them as
+   * edge_data.mean_and_turn takes them in object space. */
+  el_mean_and_turn(el_transform_normal(model, n1 - 0.5 * turn1), el_transform_normal(model, n1 + 0.5 * turn1),
+                   edge_n1, edge_turn1);
+  el_mean_and_turn(el_transform_normal(model, n2 - 0.5 * turn2), el_transform_normal(model, n2 + 0.5 * turn2),
+                   edge_n2, edge_turn2);
   edge_dir = w1 - w0;
   edge_radius = corner.z * length(mat3(model) * normalize(vec3(1.0)));
   /* Convex or concave, in object space where a mirroring model cannot turn it: N1's face runs
@@ -186,5 +191,7 @@ void main()
 
   vec2 s = (c.xy / c.w * 0.5 + 0.5) * frame.viewport.xy + across * offset;
   edge_point = world;
+  vec3 span = w1 - w0;
+  edge_t = dot(span, span) > 0.0 ? dot(world - w0, span) / dot(span, span) : 0.5;
   gl_Position = vec4((s / frame.viewport.xy * 2.0 - 1.0) * c.w, z * c.w, c.w);
 }

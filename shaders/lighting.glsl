@@ -63,3 +63,19 @@ vec3 el_transform_normal(mat4 m, vec3 n)
   }
   return r * (inversesqrt(len2) * (dot(c0, cross(c1, c2)) < 0.0 ? -1.0 : 1.0));
 }
+
+/* A side's normal halfway along an edge and its turn from its normal a at the first end to b at
+ * the second, unit a and b (edge_data.mean_and_turn): normalize(mean + (t - 1/2) turn) is their
+ * normalized blend at t. Where a == b, a itself and no turn, exactly. */
+void el_mean_and_turn(vec3 a, vec3 b, out vec3 mean, out vec3 turn)
+{
+  if (a == b) {
+    mean = a;
+    turn = vec3(0.0);
+    return;
+  }
+  vec3 m = 0.5 * (a + b);
+  float len = max(length(m), 1e-30);
+  mean = m / len;
+  turn = (b - a) / len;
+}

@@ -60,8 +60,9 @@ def edge_batches(extract):
         corner = corner[order]
         faces = e.faces if e.faces is not None else np.zeros((n, 2), np.float32)
         ends = e.ends if e.ends is not None else np.full((n, 4), band_ends.SQUARE, np.float32)
+        turn = e.turn if e.turn is not None else np.zeros((n, 6), np.float32)
         vbo = _vertbuf({"p0": rep(e.p0), "p1": rep(e.p1), "n1": rep(e.n1), "n2": rep(e.n2), "faces": rep(faces),
-                        "corner": corner, "ends": rep(ends)})
+                        "corner": corner, "ends": rep(ends), "turn1": rep(turn[:, :3]), "turn2": rep(turn[:, 3:])})
         edge = np.repeat(np.arange(n), 6)
         idx = vid(edge, np.tile(tris, n)).astype(np.int32).reshape(-1, 3)
         out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))

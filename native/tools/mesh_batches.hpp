@@ -23,7 +23,7 @@ struct EdgeSet {
     size_t size() const { return p0.size(); }
 };
 
-// One quad per edge, in the edge_highlight program's vertex_in order (p0, p1, n1, n2, corner).
+// One quad per edge, with the edge_highlight program's vertex_in (shaders/programs.json).
 struct EdgeQuads {
     std::vector<float> p0, p1, n1, n2;  // 3 per vertex
     std::vector<float> corner;          // 4 per vertex: end, side, radius, shading vertex
@@ -33,6 +33,9 @@ struct EdgeQuads {
     // 4 per vertex: where the band ends on each face (the add-on's band_ends.py); square ends
     // (pi / 2) here: this renderer does not read polygons.
     std::vector<float> ends;
+    // 3 per vertex each: how N1 and N2 turn along the edge (the add-on's edge_data.mean_and_turn),
+    // zero here: this renderer's normals are the faces' own, constant along each edge.
+    std::vector<float> turn1, turn2;
     std::vector<uint32_t> indices;      // 6 per edge
 };
 

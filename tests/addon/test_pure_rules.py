@@ -127,29 +127,54 @@ class ShadingNormals(unittest.TestCase):
             sharp=np.zeros(1, bool), bevel=np.zeros(1, np.float32),
             tri_verts=np.array([[0, 1, 2], [1, 0, 3]]),
             corner_nor=np.array([floor_corners, wall_corners], np.float32))
-        return edge_data.shading_normals(d, np.array([0]), lib)[0]
+        return edge_data.shading_normals(d, np.array([0]), lib)[0]  # (end, 6)
 
     def test_flat_faces_keep_their_normals(self):
         got = self.edge([[0, 0, 1]] * 3, [[0, -1, 0]] * 3)
-        np.testing.assert_allclose(got, [0, 0, 1, 0, -1, 0], atol=1e-6)
+        np.testing.assert_allclose(got, [[0, 0, 1, 0, -1, 0]] * 2, atol=1e-6)
 
-    def test_smooth_sides_take_the_mean_of_the_corners_at_the_edge(self):
+    def test_smooth_sides_take_their_corner_normal_at_each_end(self):
         tilt = np.array([0.0, -np.sin(0.2), np.cos(0.2)])
         other = np.array([0.0, np.sin(0.4), np.cos(0.4)])
         # The floor's corners at the edge's ends (vertices 0 and 1) lean towards the wall; its
         # third corner (off the edge) is not counted.
         got = self.edge([tilt, tilt, other], [[0, -1, 0]] * 3)
-        np.testing.assert_allclose(got[:3], tilt, atol=1e-6)
-        np.testing.assert_allclose(got[3:], [0, -1, 0], atol=1e-6)
+        np.testing.assert_allclose(got[:, :3], [tilt, tilt], atol=1e-6)
+        np.testing.assert_allclose(got[:, 3:], [[0, -1, 0]] * 2, atol=1e-6)
+
+    def test_a_normal_turning_along_the_edge_and_its_mean_and_turn(self):
+        """A smooth wall whose normal turns about z along the edge (a cylinder's rim): each end
+        takes its own corner normal, and normalize(mean + (t - 1/2) turn) gives them back at
+        t = 0 and 1 (el_edge_frame)."""
+        at0 = np.array([-np.sin(0.15), -np.cos(0.15), 0.0])
+        at1 = np.array([np.sin(0.15), -np.cos(0.15), 0.0])
+        # The wall's triangle runs 1, 0, 3: its first corner is at vertex 1 (the edge's p1).
+        got = self.edge([[0, 0, 1]] * 3, [at1, at0, [0, -1, 0]])
+        np.testing.assert_allclose(got[0, 3:], at0, atol=1e-6)
+        np.testing.assert_allclose(got[1, 3:], at1, atol=1e-6)
+        mean, turn = edge_data.mean_and_turn(got[None])
+        np.testing.assert_allclose(mean[0], [0, 0, 1, 0, -1, 0], atol=1e-6)
+        for t, want in ((0.0, at0), (1.0, at1)):
+            n = mean[0, 3:] + (t - 0.5) * turn[0, 3:]
+            np.testing.assert_allclose(n / np.linalg.norm(n), want, atol=1e-6)
+        np.testing.assert_allclose(turn[0, :3], 0.0, atol=1e-7)
 
     def test_a_reoriented_face_keeps_the_librarys_sign(self):
         got = self.edge([[0, 0, 1]] * 3, [[0, -1, 0]] * 3, flip_wall=True)
-        np.testing.assert_allclose(got[3:], [0, 1, 0], atol=1e-6)
+        np.testing.assert_allclose(got[:, 3:], [[0, 1, 0]] * 2, atol=1e-6)
 
     def test_corners_turned_too_far_are_not_taken(self):
         far = np.array([0.0, -np.sin(1.0), np.cos(1.0)])  # 57 degrees from the floor's normal
         got = self.edge([far, far, far], [[0, -1, 0]] * 3)
-        np.testing.assert_allclose(got[:3], [0, 0, 1], atol=1e-6)
+        np.testing.assert_allclose(got[:, :3], [[0, 0, 1]] * 2, atol=1e-6)
+
+    def test_one_end_turned_too_far_keeps_the_faces_normals_at_both(self):
+        """Taking the corner normal at one end alone would turn the arc along the edge where
+        Blender shades the face with neither flat normal."""
+        near = np.array([0.0, -np.sin(0.2), np.cos(0.2)])
+        far = np.array([0.0, -np.sin(0.5), np.cos(0.5)])  # 28.6 degrees: past the limit
+        got = self.edge([near, far, [0, 0, 1]], [[0, -1, 0]] * 3)
+        np.testing.assert_allclose(got[:, :3], [[0, 0, 1]] * 2, atol=1e-6)
 
 
 class ChooseEdges(unittest.TestCase):
