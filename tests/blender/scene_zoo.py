@@ -1,6 +1,9 @@
 """Scenes built the way artists build them, by script (never a saved binary), for the
 production-scene tests: Geometry Nodes instances, collection and particle instances, linked
 duplicates, view layers, objects EdgeLight does not draw. Works on Blender 3.4 through 5.x."""
+import math
+
+import bmesh
 import bpy
 import numpy as np
 
@@ -54,6 +57,24 @@ def rounded_part(name, bm, rgb, radius):
     mat.edgelight.radius = radius
     mesh.materials.append(mat)
     return ob
+
+
+def smooth_with_sharp_creases(mesh, crease_deg=30.0):
+    """Every face smooth-shaded, sharp where faces fold by more than crease_deg and along open
+    edges: auto smooth's rule, on 4.1+ (no auto smooth) marked on the edges."""
+    for p in mesh.polygons:
+        p.use_smooth = True
+    if hasattr(mesh, "use_auto_smooth"):
+        mesh.use_auto_smooth = True
+        mesh.auto_smooth_angle = math.radians(crease_deg)
+    bm = bmesh.new()
+    bm.from_mesh(mesh)
+    folds = [e.calc_face_angle(0.0) > math.radians(crease_deg) if len(e.link_faces) == 2 else True
+             for e in bm.edges]
+    bm.free()
+    for k, sharp in enumerate(folds):
+        if sharp:
+            helpers.mark_edge(mesh, "sharp", k)
 
 
 def box(name, size=1.0, location=(0.0, 0.0, 0.0), collection=None):

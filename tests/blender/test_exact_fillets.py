@@ -6,7 +6,6 @@ import os
 import sys
 import unittest
 
-import bmesh
 import bpy
 import numpy as np
 
@@ -40,20 +39,8 @@ def valley(fold_deg, radius=0.0, arc_segments=64):
     faces = [(i, (i + 1) % n, n + (i + 1) % n, n + i) for i in range(n)]
     faces += [tuple(range(n))[::-1], tuple(range(n, 2 * n))]
     ob = zoo.mesh_object("Valley", verts, faces)
-    for p in ob.data.polygons:
-        p.use_smooth = True
-    # Smooth along the arc, sharp where faces fold by more than 30 degrees (auto smooth's rule,
-    # marked on the edges where 4.1+ has no auto smooth).
-    if hasattr(ob.data, "use_auto_smooth"):
-        ob.data.use_auto_smooth = True
-        ob.data.auto_smooth_angle = math.radians(30.0)
-    bm = bmesh.new()
-    bm.from_mesh(ob.data)
-    folds = [e.calc_face_angle(0.0) > math.radians(30.0) if len(e.link_faces) == 2 else True for e in bm.edges]
-    bm.free()
-    for k, sharp in enumerate(folds):
-        if sharp:
-            helpers.mark_edge(ob.data, "sharp", k)
+    # Smooth along the arc, sharp where faces fold by more than 30 degrees.
+    zoo.smooth_with_sharp_creases(ob.data)
     return ob
 
 

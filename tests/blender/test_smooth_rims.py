@@ -35,19 +35,7 @@ def rim_scene(width_px, segments=0, highlights=True, scale=(1.0, 1.0, 1.0)):
     f = 50.0 / 36.0 * RESOLUTION[0]
     ob = zoo.rounded_part("Rim", bm, (0.6, 0.6, 0.6), width_px * float(np.linalg.norm(CAMERA)) / f)
     ob.scale = scale
-    me = ob.data
-    for p in me.polygons:
-        p.use_smooth = True
-    if hasattr(me, "use_auto_smooth"):
-        me.use_auto_smooth = True
-        me.auto_smooth_angle = math.radians(30.0)
-    bm = bmesh.new()
-    bm.from_mesh(me)
-    folds = [e.calc_face_angle(0.0) > math.radians(30.0) for e in bm.edges]
-    bm.free()
-    for k, sharp in enumerate(folds):
-        if sharp:
-            helpers.mark_edge(me, "sharp", k)
+    zoo.smooth_with_sharp_creases(ob.data)
     scene = bpy.context.scene
     scene.view_settings.view_transform = 'Standard'
     scene.edgelight.highlights = highlights
