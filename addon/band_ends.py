@@ -7,14 +7,18 @@ there is rounded too, the two fillets meet on the bisector of the corner (a mitr
 frame of a box's top, the seamless turn of a rim made of short edges); where it is not rounded,
 the band stops at that side if the corner is sharper than a right angle, and square to its edge
 otherwise. The cut is given as the angle phi of its line from the edge, towards the face's inside:
-pi / 2 is square, smaller leans over the edge. A cut never reaches past its vertex: the outer side
-of a turn (a reflex corner, where a mitre would) keeps the notch square ends leave there, since a
-band drawn past the vertex ran off the part wherever the corner was on the outline.
+pi / 2 is square, smaller leans over the edge, larger leans past the vertex. Only a mitre at a
+joint of one chain of rounded edges leans past: on the outer side of a turn (a reflex corner)
+the fillets' axes meet on the bisector beyond the vertex, and square ends there left a notch at
+every vertex of a rim (the shoulder round a boss, the plate round a hole). A band that leans past
+a corner on the outline shows in the outline's own pixels at most (the outline's fringe,
+edge_highlight.frag).
 """
 import numpy as np
 
 SQUARE = np.float32(np.pi / 2)
 _MIN = 0.02  # rad: a cut along the edge itself would remove the whole band
+_MAX_MITRE = np.float32(0.75 * np.pi)  # a mitre leans past its vertex by at most the band's width
 _MAX_FAN = 32  # facets round one vertex a cut looks across at most
 
 
@@ -93,6 +97,7 @@ def end_angles(polys, positions, normals, edges, sel, faces, rounded, smooth=Non
     if not len(_loop_lookup(polys)[0]):
         return out
     inside = (np.cross(normals[sel, :3].astype(np.float64), e), np.cross(e, normals[sel, 3:].astype(np.float64)))
+    joint = np.bincount(edges[rounded].ravel(), minlength=len(positions)) == 2  # a chain's joint
     for side in range(2):
         has = np.flatnonzero(faces[:, side] >= 0)
         poly = polys.tri_poly[faces[has, side]]
@@ -121,7 +126,13 @@ def end_angles(polys, positions, normals, edges, sel, faces, rounded, smooth=Non
             n_in /= np.maximum(np.linalg.norm(n_in, axis=1, keepdims=True), 1e-30)
             # The face's corner angle at this end, from the edge towards its inside.
             theta = np.arctan2(np.einsum("ij,ij->i", g, n_in), np.einsum("ij,ij->i", g, u)) % (2.0 * np.pi)
-            phi = np.where(rounded[other_edge], 0.5 * theta, theta)
-            phi = np.where(closed, SQUARE, np.clip(phi, _MIN, SQUARE))
+            mitre = rounded[other_edge]
+            # A mitre on the outer side of a turn leans past the vertex, over its own face, where
+            # the vertex is a joint of one chain of rounded edges: the turning fillets' bands
+            # meet on the bisector there too, with no notch. Where a third rounded edge meets
+            # them (the concave edge into a reflex corner) their fillets turn round its own.
+            lean = np.where(joint[v], _MAX_MITRE, SQUARE)
+            phi = np.where(mitre, np.minimum(0.5 * theta, lean), np.minimum(theta, SQUARE))
+            phi = np.where(closed, SQUARE, np.maximum(phi, _MIN))
             out[has, 2 * end + col] = phi.astype(np.float32)
     return out

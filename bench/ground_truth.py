@@ -99,8 +99,10 @@ def main():
         for label, method, segments in METHODS:
             times[label], rec = timed(name, radius, method, segments, SAMPLES, REPEAT)
             images[label] = pixels(rec)
-            if label == "EdgeLight":  # where EdgeLight draws a band (its highlight alpha)
-                band = np.asarray(rec["highlight"])[..., 3]
+            if label == "EdgeLight":
+                # Where EdgeLight draws a band: its highlight pass's largest channel (a band at the
+                # outline is a change of colour with no alpha).
+                band = np.abs(np.asarray(rec["highlight"])).max(axis=-1)
             if label == "off":  # the sharp mesh's coverage and depth
                 covered = np.asarray(rec["surface"])[..., 3] > 0.5
                 inv_depth = np.asarray(rec["depth"])[..., 0]

@@ -1,5 +1,6 @@
-/* I = W Is + (1 - W) I_origin, with the highlight buffer premultiplied (W Is, W); ink lines
- * (straight alpha) over that; then the world colour behind whatever is not opaque
+/* I = W Is + (1 - W) I_origin, with the highlight buffer premultiplied (W Is, W) (a band at
+ * the outline: a change of colour, alpha 0, edge_band_pixel.glsl); ink lines (straight alpha)
+ * over that; then the world colour behind whatever is not opaque
  * (background.w = 0 for a transparent film). Samples add up in the result with additive
  * blending, each scaled by weight = 1 / samples. */
 void main()

@@ -96,3 +96,18 @@ vec3 el_faces_under_band(vec3 X, vec3 V, float f1, float share1, float W, out ve
   }
   return W * (f1 - share1) * (I1 - I2);
 }
+
+/* A silhouette's band as a change to the pixel, premultiplied with no alpha of its own: W (Is -
+ * I_front) (docs/highlight_math.md, "The band at the outline"). Laid over each sample's surface
+ * as a layer, the band hides W of whatever that sample shows, the background too where the
+ * sample lies past the outline; the fillet lies on the front face and takes W out of that face
+ * alone. W is at most the pixel's share on the faces' side of the line (`faces_share`), the
+ * front face's coverage, so that the samples' mean stays a blend of the face and the band. */
+vec4 el_silhouette_band(vec4 band, vec3 X, vec3 V, float faces_share)
+{
+  vec3 E, n1, n2;
+  el_edge_frame(edge_t, E, n1, n2);
+  vec3 front = dot(n1, V) >= dot(n2, V) ? n1 : n2;
+  float W = min(band.w, clamp(faces_share, 0.0, 1.0));
+  return vec4(W * (band.rgb / band.w - el_face_colour(normalize(front), X, V)), 0.0);
+}

@@ -66,6 +66,9 @@ void main()
   }
   bool same_object = id.x == instance_id && id.y > 0.0;
   float plane_depth = own || !same_object || dot(n_here, V) <= 0.0 ? -1.0 : el_plane_depth(pc, X, n_here);
+  /* The pixel's centre shows one of the edge's faces (or a facet in its plane), or what lies
+   * past the outline, rather than a third face of the object (el_silhouette_band). */
+  bool faces_or_past = own || !same_object || (plane_depth > 0.0 && inv_surface > 0.0 && abs(plane_depth - 1.0 / inv_surface) <= bias);
   if (plane_depth > 0.0) {
     edge_depth = plane_depth;
   }
@@ -92,6 +95,16 @@ void main()
 #ifdef EL_FACES_UNDER
   /* Blinn-Phong materials: the band replaces the faces under it, not the pixel's mean (a toon
    * surface's faces are not shaded by el_face_colour, so its bands blend over the mean). */
+#ifdef EL_EDGE_IDS
+  /* At a silhouette, where the pixel shows one of the edge's faces or what lies past the
+   * outline (not a third face of its object, which a wide band runs over), each sample shows the
+   * face or what lies past: the band changes the face's part alone. Both faces lie on N1's side
+   * of the line there. */
+  if (edge_far.w < -0.5 && base_color.a >= 1.0 && faces_or_past) {
+    out_color = el_silhouette_band(result, X, V, pixel1);
+    return;
+  }
+#endif
   vec3 far;
   float near_share;
   result.rgb += el_faces_under_band(X, V, pixel1, share1, result.w, far, near_share);

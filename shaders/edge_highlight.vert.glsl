@@ -138,9 +138,10 @@ void main()
     edge_cut0 = front1 ? edge_cut0.xyxy : edge_cut0.zwzw;
     edge_cut1 = front1 ? edge_cut1.xyxy : edge_cut1.zwzw;
   }
-  /* edge_far.w: both faces facing the eye, one each side of the line (el_faces_under_band); a
-   * face seen at a grazing angle still covers its side of the pixels next to the line. */
-  edge_far = vec4(s1, side1, side1 != side2 && min(f1, f2) > 0.0 ? 1.0 : 0.0);
+  /* edge_far.w: 1 where both faces face the eye, one each side of the line (el_faces_under_band;
+   * a face seen at a grazing angle still covers its side of the pixels next to the line); -1 at
+   * a silhouette, both faces on one side (el_silhouette_band); 0 otherwise. */
+  edge_far = vec4(s1, side1, side1 != side2 && min(f1, f2) > 0.0 ? 1.0 : (side1 == side2 ? -1.0 : 0.0));
 
   /* Cull before any fragment runs (viewport.visible_edges counts the same tests): both faces
    * turned away (judged at the edge's midpoint, the same for all four corners), or a weight

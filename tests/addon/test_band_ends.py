@@ -20,6 +20,16 @@ def angles(positions, edges, polys, tris, rounded):
     return band_ends.end_angles(polys, positions, normals, edges, sel, faces, rounded)
 
 
+def prism(outline):
+    """A prism of height 1 over a counter-clockwise outline in the xy plane: the outline's index
+    i at z = 0, i + n at z = 1; the top face is polygon 1."""
+    n = len(outline)
+    verts = [(x, y, 0.0) for x, y in outline] + [(x, y, 1.0) for x, y in outline]
+    polys = [list(range(n))[::-1], [i + n for i in range(n)]]
+    polys += [[i, (i + 1) % n, (i + 1) % n + n, i + n] for i in range(n)]
+    return mesh(verts, polys)
+
+
 class BandEnds(unittest.TestCase):
     def test_box_corners_mitre(self):
         positions, edges, polys, tris = box()
@@ -81,6 +91,41 @@ class BandEnds(unittest.TestCase):
         f = [tuple(x) for x in edges.tolist()].index((0, 1))
         self.assertTrue(np.any(np.isclose(out[f], a / 2, atol=1e-6)), out[f])
 
+    def test_outer_side_of_a_turn_mitres_past_the_vertex(self):
+        """A top face with a reflex corner (the outer side of a turn, as a shoulder round a boss's
+        rim), its outline rounded: where the vertex joins two rounded edges alone, they meet on
+        the corner's bisector, which leans past their vertex (theta / 2 past square, at most
+        3 pi / 4); with the concave edge into the corner rounded too, or the neighbouring side
+        not rounded, the band ends square."""
+        for reflex_deg in (200.0, 270.0, 320.0):
+            half = math.radians(reflex_deg - 180.0) / 2.0
+            # A rectangle whose top side dips at its middle vertex 3, turning there by twice half.
+            outline = [(0.0, 0.0), (2.0, 0.0), (2.0, 4.0), (1.0, 4.0 - math.tan(half)), (0.0, 4.0)]
+            positions, edges, polys, tris = prism(outline)
+            n = len(outline)
+            index = [tuple(x) for x in edges.tolist()]
+            top = np.array([max(e) >= n and min(e) >= n for e in index])  # the top face's outline
+            sides = [index.index((n + 2, n + 3)), index.index((n + 3, n + 4))]  # its sides at the dip
+
+            def cut_at_dip(out, e):
+                end = 0 if edges[e, 0] == n + 3 else 1
+                return out[e, 2 * end:2 * end + 2]
+
+            out = angles(positions, edges, polys, tris, top)
+            want = min(math.radians(reflex_deg) / 2.0, 0.75 * math.pi)
+            for e in sides:
+                self.assertTrue(np.any(np.isclose(cut_at_dip(out, e), want, atol=1e-5)), (reflex_deg, out[e]))
+            # The concave edge into the corner rounded too: a corner of three fillets.
+            concave = top.copy()
+            concave[index.index((3, n + 3))] = True
+            out = angles(positions, edges, polys, tris, concave)
+            for e in sides:
+                self.assertTrue(np.any(np.isclose(cut_at_dip(out, e), math.pi / 2, atol=1e-6)), (reflex_deg, out[e]))
+            # The neighbouring side not rounded.
+            one = top.copy()
+            one[sides[0]] = False
+            out = angles(positions, edges, polys, tris, one)
+            self.assertTrue(np.any(np.isclose(cut_at_dip(out, sides[1]), math.pi / 2, atol=1e-6)), out[sides[1]])
 
 if __name__ == "__main__":
     unittest.main()

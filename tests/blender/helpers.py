@@ -107,6 +107,13 @@ def sample(image, xy):
     return image[y, x]
 
 
+def highlight_change(rec):
+    """Per pixel, how much the highlight pass changes the image: its premultiplied pass's largest
+    channel. A band laid over the surface has alpha W; a silhouette's band is a change of colour
+    with no alpha (docs/highlight_math.md, "The band at the outline")."""
+    return np.abs(np.asarray(rec["highlight"])).max(axis=-1)
+
+
 def edge_profile(rec, image, a, b, ts, offsets):
     """Values of `image` across the projected edge a-b: (len(ts), len(offsets), C)."""
     a, b = np.asarray(a, float), np.asarray(b, float)

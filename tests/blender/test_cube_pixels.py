@@ -32,7 +32,7 @@ class CubePixels(unittest.TestCase):
     def test_pixels_off_edges_equal_the_surface_pass(self):
         rec = self.render()
         px, surf, hl = rec["pixels"], rec["surface"], rec["highlight"]
-        off = (hl[..., 3] == 0.0) & (surf[..., 3] == 1.0)
+        off = (helpers.highlight_change(rec) == 0.0) & (surf[..., 3] == 1.0)
         on_object = surf[..., 3] == 1.0
         self.assertGreater(off.sum(), 0.95 * on_object.sum())
         self.assertTrue(np.array_equal(px[off][:, :3], surf[off][:, :3]))

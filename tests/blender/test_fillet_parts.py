@@ -137,7 +137,7 @@ class FacesUnderTheBand(unittest.TestCase):
         sharp = images["sharp"]
         covered = np.asarray(sharp["surface"])[..., 3] > 0.5
         changed = np.abs(display(ref) - display(np.asarray(sharp["pixels"])[..., :3])).max(axis=2) > 1.0 / 255.0
-        changed |= np.asarray(images["ours"]["highlight"])[..., 3] > 1.0 / 255.0
+        changed |= helpers.highlight_change(images["ours"]) > 1.0 / 255.0
         outline = gt_scenes.regions(scene, changed, covered, width, np.asarray(sharp["depth"])[..., 0])["outline"]
         psnr = {k: gt_scenes.errors(np.asarray(images[k]["pixels"])[..., :3], ref, outline)[2] for k in ("ours", "sharp")}
         print(f"pinion at {width} px, outline ({int(outline.sum())} pixels): PSNR EdgeLight {psnr['ours']:.1f} dB, sharp {psnr['sharp']:.1f} dB")
@@ -146,9 +146,10 @@ class FacesUnderTheBand(unittest.TestCase):
 
 
 def spill(rec, margin=2):
-    """The highlight's weight summed over pixels more than `margin` pixels from the part's
-    coverage, and how many such pixels there are: a fillet lies within its part's outline."""
-    hl = np.asarray(rec["highlight"])[..., 3]
+    """What the highlight changes (helpers.highlight_change) summed over pixels more than `margin`
+    pixels from the part's coverage, and how many such pixels there are: a fillet lies within its
+    part's outline."""
+    hl = helpers.highlight_change(rec)
     near = np.asarray(rec["surface"])[..., 3] > 0.5
     for _ in range(margin):
         near = near | np.roll(near, 1, 0) | np.roll(near, -1, 0) | np.roll(near, 1, 1) | np.roll(near, -1, 1)

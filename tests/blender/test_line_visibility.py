@@ -233,7 +233,7 @@ class BandVisibility(unittest.TestCase):
         rec = helpers.render()
         surface = np.asarray(rec["surface"])
         on_plate = surface[..., 1] > 2.0 * surface[..., 0]
-        band = np.asarray(rec["highlight"])[..., 3] > 1.0 / 255.0
+        band = helpers.highlight_change(rec) > 1.0 / 255.0
         self.assertGreater(on_plate.sum(), 2000)
         self.assertGreater((band & ~on_plate).sum(), 50, "the edge's band shows beside the plate")
         self.assertEqual(int((band & on_plate).sum()), 0, "band pixels on the plate")

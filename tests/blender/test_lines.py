@@ -286,7 +286,7 @@ class ScaleAndDebug(unittest.TestCase):
         clear = surf & (rec["lines"][..., 3] == 0.0)
         self.assertGreater(clear.sum(), 5000)
         self.assertTrue(np.array_equal(rec["pixels"][clear][:, :3], np.ones((clear.sum(), 3), np.float32)))
-        self.assertEqual(int((rec["highlight"][..., 3] > 0).sum()), 0, "no highlights in whiteout")
+        self.assertEqual(int((helpers.highlight_change(rec) > 0).sum()), 0, "no highlights in whiteout")
         self.assertGreater(int((rec["lines"][..., 3] > 0.99).sum()), 500, "the lines are drawn")
 
     def test_edge_types_view_colours_silhouettes_red_and_creases_yellow(self):

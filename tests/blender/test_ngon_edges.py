@@ -51,7 +51,7 @@ class CutEdges(unittest.TestCase):
     def test_slivers_put_no_band_astray(self):
         box_with_cut_edge(lift=2e-4)
         rec = helpers.render()
-        hl = np.asarray(rec["highlight"])[..., 3]
+        hl = helpers.highlight_change(rec)
         cov = np.asarray(rec["surface"])[..., 3] > 0.5
         # Pixels more than 3 px away from the box's coverage: a band there is astray.
         near = cov.copy()

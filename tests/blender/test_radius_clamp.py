@@ -31,7 +31,7 @@ def cube_with_radius(radius, scale=1.0, cuts=0):
 
 def band_outside(rec):
     """Highlight pixels where no surface is: a band past its object."""
-    band = np.asarray(rec["highlight"])[..., 3] > 1.0 / 255.0
+    band = helpers.highlight_change(rec) > 1.0 / 255.0
     empty = np.asarray(rec["surface"])[..., 3] == 0.0
     return int((band & empty).sum())
 
