@@ -66,9 +66,9 @@ void main()
   }
   bool same_object = id.x == instance_id && id.y > 0.0;
   float plane_depth = own || !same_object || dot(n_here, V) <= 0.0 ? -1.0 : el_plane_depth(pc, X, n_here);
-  /* The pixel's centre shows one of the edge's faces (or a facet in its plane), or what lies
-   * past the outline, rather than a third face of the object (el_silhouette_band). */
-  bool faces_or_past = own || !same_object || (plane_depth > 0.0 && inv_surface > 0.0 && abs(plane_depth - 1.0 / inv_surface) <= bias);
+  /* The pixel's centre shows one of the edge's faces, or a facet in its plane
+   * (el_silhouette_band). */
+  bool on_faces = own || (plane_depth > 0.0 && inv_surface > 0.0 && abs(plane_depth - 1.0 / inv_surface) <= bias);
   if (plane_depth > 0.0) {
     edge_depth = plane_depth;
   }
@@ -96,11 +96,11 @@ void main()
   /* Blinn-Phong materials: the band replaces the faces under it, not the pixel's mean (a toon
    * surface's faces are not shaded by el_face_colour, so its bands blend over the mean). */
 #ifdef EL_EDGE_IDS
-  /* At a silhouette, where the pixel shows one of the edge's faces or what lies past the
-   * outline (not a third face of its object, which a wide band runs over), each sample shows the
-   * face or what lies past: the band changes the face's part alone. Both faces lie on N1's side
-   * of the line there. */
-  if (edge_far.w < -0.5 && base_color.a >= 1.0 && faces_or_past) {
+  /* At a silhouette, where the pixel's centre shows one of the edge's faces, each sample shows
+   * the face or what lies past the outline: the band changes the face's part alone. Both faces
+   * lie on N1's side of the line there. Over a third face of its object (a wide band runs over
+   * it) or past the outline (where the samples may all miss the face) it stays a layer. */
+  if (edge_far.w < -0.5 && base_color.a >= 1.0 && on_faces) {
     out_color = el_silhouette_band(result, X, V, pixel1);
     return;
   }

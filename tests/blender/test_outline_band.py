@@ -38,9 +38,9 @@ def box_before_backdrop(width_px, backdrop_rgb, highlights):
 class BandAtTheOutline(unittest.TestCase):
     def test_band_hides_nothing_past_the_outline(self):
         """At 0.5 and 1 px (wider bands lie inside the outline's pixels): on the pixels the
-        outline crosses (those whose colour depends on the backdrop's, partly), the change that
-        the backdrop's colour makes is the same with highlights as without. A band laid over the
-        samples as a layer hid W of the backdrop there too."""
+        outline crosses (those whose colour depends on the backdrop's, partly) that lie mostly on
+        the box, the change that the backdrop's colour makes is the same with highlights as
+        without. A band laid over the samples as a layer hid W of the backdrop there too."""
         for width in (0.5, 1.0):
             img = {}
             for hl in (False, True):
@@ -51,7 +51,9 @@ class BandAtTheOutline(unittest.TestCase):
             seen_on = img[True, "light"] - img[True, "dark"]
             full = np.percentile(seen_off.max(axis=2), 99.0)  # where only the backdrop shows
             share = seen_off.max(axis=2) / full
-            outline = (share > 0.05) & (share < 0.95)
+            # The outline's pixels mostly on the box (their centres on it): past the outline
+            # the band stays a layer, since the samples there may all miss the face.
+            outline = (share > 0.05) & (share < 0.45)
             band = np.maximum(np.abs(img[True, "dark"] - img[False, "dark"]).max(axis=2),
                               np.abs(img[True, "light"] - img[False, "light"]).max(axis=2)) > 2.0 / 255.0
             hidden = (seen_off - seen_on).max(axis=2)
@@ -60,10 +62,10 @@ class BandAtTheOutline(unittest.TestCase):
             print(f"{width} px: {int(outline.sum())} outline pixels, {int((outline & band).sum())} with "
                   f"a band; the backdrop's change hidden by the bands: mean {mean:.5f} (of {full:.3f}), "
                   f"{many} pixels over 0.01, worst {float(np.abs(hidden[outline]).max()):.4f}")
-            self.assertGreater(int((outline & band).sum()), 100, "bands cross the outline")
-            # Measured: mean 0 and 0.00014, one pixel over 0.01 at 1 px (a silhouette's corner,
+            self.assertGreater(int((outline & band).sum()), 50, "bands cross the outline")
+            # Measured: mean 0 and 0.0003, one pixel over 0.01 at 1 px (a silhouette's corner,
             # whose centre shows the box's third face: there the band stays a layer); as a
-            # layer everywhere, mean 0.042 at 0.5 px, 244 pixels over 0.01.
+            # layer everywhere, mean 0.034 at 0.5 px, 110 pixels over 0.01.
             self.assertLess(mean, 0.002, f"{width} px")
             self.assertLessEqual(many, 3, f"{width} px")
 
