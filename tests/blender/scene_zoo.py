@@ -59,6 +59,12 @@ def rounded_part(name, bm, rgb, radius):
     return ob
 
 
+def radius_at_width(width_px, camera, resolution_x):
+    """The radius whose image is width_px pixels wide at the origin (r f / d), seen from a camera
+    at `camera` looking at it with helpers.add_camera's 50 mm lens on Blender's 36 mm sensor."""
+    return width_px * float(np.linalg.norm(camera)) / (50.0 / 36.0 * resolution_x)
+
+
 def smooth_with_sharp_creases(mesh, crease_deg=30.0):
     """Every face smooth-shaded, sharp where faces fold by more than crease_deg and along open
     edges: auto smooth's rule, on 4.1+ (no auto smooth) marked on the edges."""

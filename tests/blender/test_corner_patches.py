@@ -27,7 +27,7 @@ CORNER = (1.0, -1.0, 1.0)  # the corner facing the camera, inside the box's imag
 
 def radius_for(width_px):
     """The radius whose image is width_px pixels at the origin (r f / d), 50 mm lens."""
-    return width_px * float(np.linalg.norm(CAMERA)) / (50.0 / 36.0 * RESOLUTION[0])
+    return zoo.radius_at_width(width_px, CAMERA, RESOLUTION[0])
 
 
 def box_scene(radius, segments=0, highlights=True, scale=(1.0, 1.0, 1.0), strength=1.0):
@@ -146,7 +146,7 @@ class CornerPatches(unittest.TestCase):
         highlights off."""
         camera = (4.0, 5.0, 4.5)
         for width in (3.0, 8.0):
-            radius = width * float(np.linalg.norm(camera)) / (50.0 / 36.0 * RESOLUTION[0])
+            radius = zoo.radius_at_width(width, camera, RESOLUTION[0])
             renders = {}
             for name, kw in (("truth", dict(segments=32)), ("ours", {}), ("off", dict(highlights=False))):
                 helpers.empty_scene(*RESOLUTION, samples=16 if kw.get("segments") else 4)

@@ -47,8 +47,7 @@ def valley(fold_deg, radius=0.0, arc_segments=64):
 def scene(fold_deg, width_px, camera, exact_radius=0.0, bevel=0, highlights=True, samples=8, circular=False):
     helpers.empty_scene(*RESOLUTION, samples=samples)
     helpers.add_camera(camera, target=(0.0, 0.0, 0.0))
-    f = 50.0 / 36.0 * RESOLUTION[0]
-    radius = width_px * float(np.linalg.norm(camera)) / f
+    radius = zoo.radius_at_width(width_px, camera, RESOLUTION[0])
     # A glint a quarter of the way across the fillet's arc of normals.
     t = math.radians(fold_deg) / 4.0
     n = np.array([-math.sin(t), 0.0, math.cos(t)])

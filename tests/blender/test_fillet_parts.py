@@ -38,8 +38,7 @@ def step_scene(radius, segments=0, highlights=True):
 def radius_for(width_px, camera_location=(5.0, -3.0, 4.0)):
     """The radius whose image is width_px pixels at the origin (r f / d), 50 mm lens, for a
     camera at camera_location looking at the origin."""
-    f = 50.0 / 36.0 * RESOLUTION[0]
-    return width_px * float(np.linalg.norm(camera_location)) / f
+    return zoo.radius_at_width(width_px, camera_location, RESOLUTION[0])
 
 
 class ConcaveEdges(unittest.TestCase):

@@ -21,8 +21,7 @@ def box_before_backdrop(width_px, backdrop_rgb, highlights):
     helpers.add_sun((0.5, -0.8, 0.6), 4.0)
     cube = zoo.box("Box")
     mat = zoo.material("BoxMaterial", (0.8, 0.8, 0.8))
-    f = 50.0 / 36.0 * RESOLUTION[0]
-    mat.edgelight.radius = width_px * float(np.linalg.norm(CAMERA)) / f
+    mat.edgelight.radius = zoo.radius_at_width(width_px, CAMERA, RESOLUTION[0])
     cube.data.materials.append(mat)
     d = -CAMERA / np.linalg.norm(CAMERA)
     u = np.cross(d, (0.0, 0.0, 1.0))

@@ -51,8 +51,7 @@ def rim_scene(width_px, segments=0, highlights=True, scale=(1.0, 1.0, 1.0), shap
         bmesh.ops.create_cone(bm, cap_ends=True, segments=SIDES, radius1=1.0, radius2=1.0, depth=1.2)
     else:
         bm = stepped_shaft()
-    f = 50.0 / 36.0 * RESOLUTION[0]
-    ob = zoo.rounded_part("Rim", bm, (0.6, 0.6, 0.6), width_px * float(np.linalg.norm(CAMERA)) / f)
+    ob = zoo.rounded_part("Rim", bm, (0.6, 0.6, 0.6), zoo.radius_at_width(width_px, CAMERA, RESOLUTION[0]))
     ob.scale = scale
     zoo.smooth_with_sharp_creases(ob.data)
     scene = bpy.context.scene
@@ -123,6 +122,7 @@ class SmoothRim(unittest.TestCase):
         rmse, worst = against_fillets(4.0, shape="stepped")
         self.assertGreater(rmse["sharp"], 0.05)
         self.assertLess(rmse["EdgeLight"], 0.026)
+
 
 if __name__ == "__main__":
     unittest.main()
