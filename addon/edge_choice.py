@@ -24,6 +24,7 @@ class EdgeSet:
     ends: np.ndarray = None            # (N, 4) float32 where its band ends on each face (band_ends.py)
     corners: object = None             # corner_patches.Corners where three of its edges meet (the first's slot)
     turn: np.ndarray = None            # (N, 6) float32 how N1, N2 change along it (edge_data.mean_and_turn)
+    verts: np.ndarray = None           # (N, 2) its vertices (the mesh's), p0's then p1's
 
     def __len__(self):
         return len(self.radius)
@@ -107,5 +108,5 @@ def choose_edges(d, shading):
                                  radius[sel], surface_ids(d, faces),
                                  band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen,
                                                       ~stop, d.edge_polygons()),
-                                 corners.subset(np.flatnonzero(corner_slot == slot)), turn)
+                                 corners.subset(np.flatnonzero(corner_slot == slot)), turn, edges[sel])
     return out

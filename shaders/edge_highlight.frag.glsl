@@ -48,8 +48,12 @@ void main()
   vec2 id = texelFetch(surface_id, ivec2(pc), 0).rg;
   bool own = id.x == instance_id && id.y > 0.0 && (id.y == edge_faces.x || id.y == edge_faces.y);
   /* Background: a fillet lies within its part's outline (a convex one inside the solid, a
-   * concave one over its faces), so the band shows past it only in the outline's own pixels. */
-  if (!(id.y > 0.0) && !el_outline_fringe(ivec2(pc))) {
+   * concave one over its faces), so the band shows past it only in the outline's own pixels.
+   * The surface pass draws that outline rounded (rounded_outline.glsl): a silhouette's strip
+   * moves it in by up to 0.41 r, and past a corner it is the ball's circle, which the bands'
+   * square ends overhang. From a radius of 2 pixels on, where that reaches past a pixel, no band
+   * shows over the background. */
+  if (!(id.y > 0.0) && (edge_radius > 2.0 * world_per_px || !el_outline_fringe(ivec2(pc)))) {
     discard;
   }
   float bias = own ? 3.0e38 : 0.5 * world_per_px + 1e-5 * dist;

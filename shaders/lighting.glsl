@@ -48,6 +48,14 @@ vec3 el_blinn_phong(int i, vec3 X, vec3 N, vec3 V, vec3 albedo, vec3 spec, float
   return E * (albedo * (nl / 3.14159265) + spec * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
 }
 
+/* The cofactor matrix of m's linear part, signed by its determinant: a normal transformed by it
+ * points as el_transform_normal's, not unit (for many normals under one transform). */
+mat3 el_normal_matrix(mat4 m)
+{
+  vec3 c0 = m[0].xyz, c1 = m[1].xyz, c2 = m[2].xyz;
+  return mat3(cross(c1, c2), cross(c2, c0), cross(c0, c1)) * (dot(c0, cross(c1, c2)) < 0.0 ? -1.0 : 1.0);
+}
+
 /* Normals transform by the inverse transpose of the linear part; the cofactor matrix is that
  * times det, so three cross products and det's sign give the direction without an inverse.
  * A singular transform (an object scaled to zero along an axis) still gives a finite normal:

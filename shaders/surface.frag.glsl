@@ -8,6 +8,22 @@
 #endif
 void main()
 {
+#ifdef EL_ROUNDED_OUTLINE
+  /* The strips a rounded silhouette leaves out, and past a corner the ball's circle
+   * (rounded_outline.glsl). */
+  for (int k = 0; k < 4; k++) {
+    float strip = mix(outline_strip0[k], outline_strip1[k], clamp(outline_along[k], 0.0, 1.0));
+    if (strip > 0.0 && abs(outline_dist[k]) < strip && outline_along[k] >= 0.0 && outline_along[k] <= 1.0) {
+      discard;
+    }
+  }
+  for (int q = 0; q < 4; q++) {
+    vec4 z = q == 0 ? outline_corner0 : (q == 1 ? outline_corner1 : (q == 2 ? outline_corner2 : outline_corner3));
+    if (outline_ball[q] > 0.0 && z.z > 0.0 && z.w > 0.0 && dot(z.xy, z.xy) > outline_ball[q] * outline_ball[q]) {
+      discard;
+    }
+  }
+#endif
   out_depth = 1.0 / max(view_depth, 1e-30); /* 0 where nothing was drawn: infinitely far */
   /* Seen from its front: a mirrored object (negative determinant) reverses its triangles'
    * winding on screen, and world_nor (el_transform_normal) already points outward. */

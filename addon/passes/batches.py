@@ -3,7 +3,7 @@ slot."""
 import gpu
 import numpy as np
 
-from .. import band_ends
+from .. import band_ends, compat, rounded_outline
 from . import shader_lib
 
 
@@ -24,6 +24,39 @@ def surface_batches(extract):
         corners = (tris[:, None] * 3 + np.arange(3)).reshape(-1)
         vbo = _vertbuf({"pos": extract.corner_pos[corners], "nor": extract.corner_nor[corners]})
         out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo)
+    return out
+
+
+def _float_rows(items, per_row, limit):
+    """(N, texels, 4) float32 -> an RGBA32F texture of per_row items a row, zero-padded; None
+    past `limit` rows."""
+    rows = max(1, -(-len(items) // per_row))
+    if rows > limit:
+        return None
+    flat = np.zeros((rows * per_row, items.shape[1] * 4), np.float32)
+    flat[:len(items)] = items.reshape(len(items), -1)
+    flat = flat.reshape(-1)
+    return compat.texture((per_row * items.shape[1], rows), 'RGBA32F', gpu.types.Buffer('FLOAT', flat.size, flat))
+
+
+def outline_textures(extract):
+    """slot -> (edge, corner, triangle textures) of rounded_outline.records, for the slots a
+    strip or a corner may cross. Past what a texture holds, the outline stays the sharp mesh's."""
+    recs = rounded_outline.records(extract)
+    if recs is None:
+        return {}
+    limit = gpu.capabilities.max_texture_size_get()
+    edges = _float_rows(recs[0], rounded_outline.EDGES_PER_ROW, limit)
+    corners = _float_rows(recs[1] if len(recs[1]) else np.zeros((1, rounded_outline.CORNER_TEXELS, 4), np.float32),
+                          rounded_outline.CORNERS_PER_ROW, limit)
+    out = {}
+    for slot, lists in recs[2].items():
+        texels = np.zeros((len(lists), rounded_outline.TRIANGLE_TEXELS * 4), np.float32)
+        texels[:, :lists.shape[1]] = lists
+        tris = _float_rows(texels.reshape(len(lists), rounded_outline.TRIANGLE_TEXELS, 4),
+                           rounded_outline.TRIANGLES_PER_ROW, limit)
+        if edges is not None and corners is not None and tris is not None:
+            out[slot] = (edges, corners, tris)
     return out
 
 
@@ -111,6 +144,7 @@ class GpuMesh:
     def rebuild_edges(self):
         self.edges = edge_batches(self.extract)
         self.corners = corner_batches(self.extract)
+        self.outline = outline_textures(self.extract)
         self.edge_count = sum(len(e) for e in self.extract.edges.values())
 
 

@@ -112,6 +112,8 @@ def _build(name, d, defines, source_dir=None):
         iface.smooth(type_name, var)
     for type_name, var in out.get("flat", []):
         iface.flat(type_name, var)
+    for type_name, var in out.get("no_perspective", []):
+        iface.no_perspective(type_name, var)
     info.vertex_out(iface)
     for slot, (type_name, var) in enumerate(d["samplers"]):
         info.sampler(slot, type_name, var)

@@ -1,5 +1,6 @@
 """Surface pass: each material slot's triangles, shaded (Blinn-Phong, toon ramp, X-Toon or
 whiteout), into the surface targets; with ids, which instance and face covers each pixel."""
+from .. import rounded_outline
 from . import frame_data, pass_state, shader_lib, shader_specs, toon
 from .targets import surface_outputs
 
@@ -38,11 +39,13 @@ def slot_first_ids(extract):
     return out
 
 
-def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False):
+def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False):
     """One program per shading mode in use (EL_SURFACE_MODE is fixed when it is built: a uniform
     branch would make every fragment pay for every mode on llvmpipe). With `ids`, the variant
     that also writes which instance and face covers each pixel (the line pass's visibility,
-    docs/lines.md)."""
+    docs/lines.md). With `rounded` (the edge pass draws the bands), slots with rounded convex
+    edges leave out the strip between a sharp silhouette and its fillet's outline
+    (rounded_outline.glsl), in their own variant."""
     draws, firsts = {}, {}
     for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
@@ -51,17 +54,25 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False):
         first = firsts.get(id(gm.extract), {})
         for slot, batch in gm.surface.items():
             s = gm.extract.slot_shading[slot]
-            draws.setdefault(_surface_mode(s, whiteout), []).append(
-                (inst.matrix, s, batch, (float(index + 1), float(first.get(slot, 0)))))
+            sides = gm.outline.get(slot) if rounded else None
+            draws.setdefault((_surface_mode(s, whiteout), sides is not None), []).append(
+                (inst.matrix, s, batch, (float(index + 1), float(first.get(slot, 0))), sides))
     outputs = surface_outputs(targets, ids)
     with pass_state.drawing("surface", targets.surface_ids_fb if ids else targets.surface_fb):
-        for mode, items in sorted(draws.items()):
-            shader = shader_lib.get("surface", {"EL_SURFACE_MODE": mode, **outputs})
+        for (mode, outline), items in sorted(draws.items()):
+            defines = {"EL_SURFACE_MODE": mode, **outputs}
+            if outline:
+                defines.update(EL_ROUNDED_OUTLINE=1, **rounded_outline.layout_defines())
+            shader = shader_lib.get("surface", defines)
             shader.bind()
             shader.uniform_block("frame", ubo)
-            for matrix, s, batch, surface_ids in items:
+            for matrix, s, batch, surface_ids, sides in items:
                 shader_lib.set_uniform(shader, "model", frame_data.mat4(matrix))
                 shader_lib.set_uniform(shader, "surface_ids", surface_ids)
                 shading_uniforms(shader, s)
                 _toon_uniforms(shader, s, mode)
+                if sides is not None:
+                    shader_lib.set_sampler(shader, "outline_edges", sides[0])
+                    shader_lib.set_sampler(shader, "outline_corners", sides[1])
+                    shader_lib.set_sampler(shader, "outline_triangles", sides[2])
                 batch.draw(shader)

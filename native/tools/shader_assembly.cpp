@@ -126,8 +126,11 @@ std::string interface_block(const json& out, const char* direction, const std::s
     std::ostringstream s;
     s << direction << " " << out.at("name").get<std::string>() << " {\n";
     size_t members = 0;
-    for (const char* qual : {"smooth", "flat"}) {
-        for (const auto& v : vars(list_of(out, qual))) {
+    // programs.json's key, the GLSL qualifier
+    const std::pair<const char*, const char*> quals[] = {
+        {"smooth", "smooth"}, {"flat", "flat"}, {"no_perspective", "noperspective"}};
+    for (const auto& [key, qual] : quals) {
+        for (const auto& v : vars(list_of(out, key))) {
             s << "  " << qual << " " << glsl_type(v.type, program) << " " << v.name << ";\n";
             ++members;
         }

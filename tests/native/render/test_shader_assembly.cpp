@@ -19,6 +19,24 @@ TEST_F(ShaderAssembly, EveryProgramCompilesAndLinks) {
     }
 }
 
+// The surface program's variant that leaves out the strips and corners a rounded outline moves
+// in (the add-on builds it with highlights on, the layout from rounded_outline.py's constants):
+// compiles and links, its distances interpolated without perspective.
+TEST_F(ShaderAssembly, RoundedOutlineVariantCompilesAndLinks) {
+    const std::vector<std::pair<std::string, std::string>> defines = {
+        {"EL_ROUNDED_OUTLINE", "1"},
+        {"EL_OUTLINE_EDGE_TEXELS", "4"},
+        {"EL_OUTLINE_EDGES_PER_ROW", "1024"},
+        {"EL_OUTLINE_CORNER_TEXELS", "5"},
+        {"EL_OUTLINE_CORNERS_PER_ROW", "1024"},
+        {"EL_OUTLINE_TRIANGLE_TEXELS", "2"},
+        {"EL_OUTLINE_TRIANGLES_PER_ROW", "2048"},
+    };
+    const auto p = el_tools::assemble_program(EDGELIGHT_SHADER_DIR, "surface", defines);
+    EXPECT_NE(p.vertex.find("noperspective vec4 outline_dist;"), std::string::npos);
+    EXPECT_NO_THROW({ el_tools::Program program(p); });
+}
+
 TEST_F(ShaderAssembly, InterfaceFollowsProgramsJson) {
     const auto p = el_tools::assemble_program(EDGELIGHT_SHADER_DIR, "edge_highlight");
     // Flat outputs stay flat (each quad carries its edge's), slots in list order.

@@ -1,0 +1,285 @@
+"""Where a rounded silhouette pulls the part's outline in (docs/highlight_math.md, "The fillet's
+outline"): what the surface pass needs to leave out the strip between a sharp silhouette edge and
+its fillet's outline (shaders/rounded_outline.glsl). The mesh's convex rounded edges, and per
+surface triangle up to EDGES_PER_TRIANGLE of them whose strip may cross it: its own sides', then
+the nearest of those whose strip reaches into its patch (a quad's other half at the edge's end,
+the thin facets of a triangulated face along it). No bpy: plain-Python tests import it."""
+import numpy as np
+
+# Per edge: (N1, radius), (N2, 0), (p0, 0), (p1, 0), object space, the normals as the edge pass
+# shades with (edge_choice.EdgeSet).
+EDGE_TEXELS = 4
+EDGES_PER_ROW = 1024
+# Per corner patch (three convex rounded edges meeting): (ball centre, radius), (vertex, 0), and
+# its three sectors' normals (AB, BC, CA; corner_patches.Corners).
+CORNER_TEXELS = 5
+CORNERS_PER_ROW = 1024
+# Per triangle two texels: the numbers of up to EDGES_PER_TRIANGLE edges, then of up to
+# CORNERS_PER_TRIANGLE corners, each plus one (0: none).
+EDGES_PER_TRIANGLE = 4
+CORNERS_PER_TRIANGLE = 4  # a quad's half lies in the zones of all four of its corners
+TRIANGLE_TEXELS = 2
+TRIANGLES_PER_ROW = 2048
+
+
+def layout_defines():
+    """The texture layouts above, as the surface program's defines (shaders/rounded_outline.glsl)."""
+    return {"EL_OUTLINE_EDGE_TEXELS": EDGE_TEXELS, "EL_OUTLINE_EDGES_PER_ROW": EDGES_PER_ROW,
+            "EL_OUTLINE_CORNER_TEXELS": CORNER_TEXELS, "EL_OUTLINE_CORNERS_PER_ROW": CORNERS_PER_ROW,
+            "EL_OUTLINE_TRIANGLE_TEXELS": TRIANGLE_TEXELS, "EL_OUTLINE_TRIANGLES_PER_ROW": TRIANGLES_PER_ROW}
+
+
+def convex(e):
+    """(N,) bool: the edges of EdgeSet `e` that are convex (the edge pass's edge_fold > 0: N1's
+    face runs p0 -> p1, so the surface turns away from its outside where N1 x N2 points along it)."""
+    return np.einsum("ij,ij->i", np.cross(e.n1, e.n2), e.p1 - e.p0) >= 0.0
+
+
+def _edges(extract):
+    """(M, 4, 4) float32 records of the convex rounded edges, (M, 2) their faces' batch
+    positions (surface id - 1) and (M, 2) their vertices (-1: not known)."""
+    recs, faces, verts = [], [], []
+    for e in extract.edges.values():
+        keep = np.flatnonzero(convex(e) & (e.radius > 0.0)) if e.faces is not None else []
+        if not len(keep):
+            continue
+        r = np.zeros((len(keep), EDGE_TEXELS, 4), np.float32)
+        r[:, 0, :3], r[:, 0, 3] = e.n1[keep], e.radius[keep]
+        r[:, 1, :3], r[:, 2, :3], r[:, 3, :3] = e.n2[keep], e.p0[keep], e.p1[keep]
+        recs.append(r)
+        faces.append(np.asarray(e.faces[keep], np.int64) - 1)
+        verts.append(np.asarray(e.verts, np.int64)[keep] if e.verts is not None else np.full((len(keep), 2), -1))
+    if not recs:
+        return np.zeros((0, EDGE_TEXELS, 4), np.float32), np.zeros((0, 2), np.int64), np.zeros((0, 2), np.int64)
+    return np.concatenate(recs), np.concatenate(faces), np.concatenate(verts)
+
+
+def _segment_distance(points, p0, p1):
+    """(N, K) distance of points (N, K, 3) from the segments p0 -> p1 (N, 3)."""
+    u = p1 - p0
+    uu = np.einsum("nj,nj->n", u, u)
+    # A corner's segment is a point: t is 0 there (the floor is the dtype's, 1e-300 is 0 in float32).
+    t = np.einsum("nkj,nj->nk", points - p0[:, None, :], u) / np.maximum(uu, np.finfo(uu.dtype).tiny)[:, None]
+    foot = p0[:, None, :] + np.clip(t, 0.0, 1.0)[..., None] * u[:, None, :]
+    return np.linalg.norm(points - foot, axis=-1)
+
+
+def _reach(extract, start, rec, normals, p0, p1, widest):
+    """(triangle, item) pairs an item's (an edge's or a corner's) strip may cross beyond its own
+    faces: the triangles round its vertices `start` (with `rec`, the item), within
+    radius_clamp.SMOOTH_FOLD_DEG of one of its faces' normals (`normals`, (items, K, 3): a fillet
+    runs on across a patch's facets), and on from their corners within `widest` of the item's
+    segment p0 -> p1 (a point for a corner): a quad's other half at an edge's end, the thin
+    facets of a triangulated face along it. Walked vertex by vertex, so a mesh whose faces are
+    wider than the strips costs one fan per vertex."""
+    d = extract.edge_data
+    tri_verts = getattr(d, "tri_verts", None) if d is not None else None
+    polys = getattr(d, "polygons", None) if d is not None else None
+    ok = start >= 0
+    if tri_verts is None or polys is None or polys.normal is None or not ok.any():
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    from .radius_clamp import SMOOTH_FOLD_DEG
+    cos_max = np.float32(np.cos(np.radians(SMOOTH_FOLD_DEG)))
+    tri_verts = np.asarray(tri_verts, np.int64)
+    tri_normal = np.asarray(polys.normal, np.float32)[np.asarray(polys.tri_poly, np.int64)]
+    vert_pos = np.zeros((int(tri_verts.max()) + 1, 3), np.float32)  # by vertex, from the corners
+    vert_pos[tri_verts.reshape(-1)] = np.asarray(extract.corner_pos, np.float32).reshape(-1, 3)
+    tv = tri_verts.reshape(-1)
+    by_vert = np.argsort(tv, kind="stable")
+    first = np.searchsorted(tv[by_vert], np.arange(tv.max() + 2))
+    unit = (normals / np.maximum(np.linalg.norm(normals, axis=2, keepdims=True), 1e-30)).astype(np.float32)
+    p0, p1, widest = p0.astype(np.float32), p1.astype(np.float32), widest.astype(np.float32)
+    m = max(len(p0), 1)
+    front_v, front_r = start[ok], rec[ok]
+    seen = np.unique(front_v * m + front_r)
+    out_t, out_r = [], []
+    for _ in range(8):
+        count = first[front_v + 1] - first[front_v]
+        src = np.repeat(np.arange(len(front_v)), count)
+        offs = np.arange(len(src)) - np.repeat(np.cumsum(count) - count, count)
+        t = by_vert[first[front_v][src] + offs] // 3
+        r = front_r[src]
+        flat = np.abs(np.einsum("nj,nkj->nk", tri_normal[t], unit[r])).max(axis=1) >= cos_max
+        t, r = t[flat], r[flat]
+        out_t.append(t)
+        out_r.append(r)
+        # On through the fan's corners within reach, each (corner, item) once.
+        key = np.unique(tri_verts[t].reshape(-1) * m + np.repeat(r, 3))
+        key = key[~np.isin(key, seen)]
+        cv, cr = key // m, key % m
+        key = key[_segment_distance(vert_pos[cv][:, None, :], p0[cr], p1[cr])[:, 0] < widest[cr]]
+        if not len(key):
+            break
+        seen = np.union1d(seen, key)
+        front_v, front_r = key // m, key % m
+    return np.concatenate(out_t), np.concatenate(out_r)
+
+
+def _lists(count, pos, rec, dist, per):
+    """(count, per) float32: per position, up to `per` items + 1 (0: none), nearest first."""
+    key = np.lexsort((dist, rec, pos))
+    pos, rec, dist = pos[key], rec[key], dist[key]
+    first_of = np.r_[True, (pos[1:] != pos[:-1]) | (rec[1:] != rec[:-1])]
+    pos, rec, dist = pos[first_of], rec[first_of], dist[first_of]
+    key = np.lexsort((rec, dist, pos))
+    pos, rec = pos[key], rec[key]
+    out = np.zeros((count, per), np.float32)
+    if not len(pos):
+        return out
+    start = np.r_[0, np.flatnonzero(pos[1:] != pos[:-1]) + 1]
+    nth = np.arange(len(pos)) - np.repeat(start, np.diff(np.r_[start, len(pos)]))
+    keep = nth < per
+    out[pos[keep], nth[keep]] = rec[keep] + 1
+    return out
+
+
+def _corners(extract):
+    """(K, CORNER_TEXELS, 4) float32 records of the convex corner patches, and (K,) their
+    vertices."""
+    recs, verts = [], []
+    for e in extract.edges.values():
+        c = e.corners
+        if c is None or not len(c):
+            continue
+        keep = np.flatnonzero((c.fold > 0) & (c.radius > 0.0))
+        if not len(keep):
+            continue
+        r = np.zeros((len(keep), CORNER_TEXELS, 4), np.float32)
+        r[:, 0, :3], r[:, 0, 3] = c.centre[keep], c.radius[keep]
+        r[:, 1, :3] = c.position[keep]
+        r[:, 2:5, :3] = c.normals[keep]
+        recs.append(r)
+        verts.append(np.asarray(c.vertex, np.int64)[keep])
+    if not recs:
+        return np.zeros((0, CORNER_TEXELS, 4), np.float32), np.zeros(0, np.int64)
+    return np.concatenate(recs), np.concatenate(verts)
+
+
+def _fans(tri_verts, tri_normal, order, item_verts, item_normals, per, ends=None):
+    """(T, per) float32 lists, in batch order, of the items at each triangle's corners, flat
+    with one of the item's faces (or the triangle's own side), own sides first: the strips and
+    corners of a mesh whose faces are wider than its strips cross no other triangles. Grouped by
+    triangle as generated, so nothing is sorted. item_verts (N, k): each item's vertices
+    (an edge's two ends, a corner's one); `ends` (N, 2) an edge's ends, to tell its own sides."""
+    iv = item_verts.reshape(-1)
+    ii = np.repeat(np.arange(len(item_verts)), item_verts.shape[1])
+    ok = iv >= 0
+    iv, ii = iv[ok], ii[ok]
+    by_v = np.argsort(iv, kind="stable")
+    first = np.searchsorted(iv[by_v], np.arange(int(tri_verts.max()) + 2))
+    tv = tri_verts[order]                                    # (T, 3) in batch order
+    count = (first[tv + 1] - first[tv]).reshape(-1)          # items at each (triangle, corner)
+    pair_tc = np.repeat(np.arange(tv.size), count)
+    offs = np.arange(len(pair_tc)) - np.repeat(np.cumsum(count) - count, count)
+    item = ii[by_v[first[tv.reshape(-1)][pair_tc] + offs]]
+    t, c = pair_tc // 3, pair_tc % 3
+    keep = np.ones(len(item), bool)
+    own = np.zeros(len(item), bool)
+    if ends is not None:
+        v = tv[t, c]
+        other = np.where(ends[item, 0] == v, ends[item, 1], ends[item, 0])
+        at = np.stack([tv[t, k] == other for k in range(3)], axis=1)
+        own = at.any(axis=1)
+        # An own side is reached from both its ends: kept from the first.
+        keep = ~(own & (np.argmax(at, axis=1) < c))
+    cos_max = np.float32(np.cos(np.radians(_smooth_fold_deg())))
+    flat = np.abs(np.einsum("nj,nkj->nk", tri_normal[order[t]], item_normals[item])).max(axis=1) >= cos_max
+    keep &= own | flat
+    t, item, own = t[keep], item[keep], own[keep]
+    # Slots: own sides first, then the others in the order met; pairs come grouped by triangle.
+    out = np.zeros((len(tv), per), np.float32)
+    for mask, base in ((own, None), (~own, np.bincount(t[own], minlength=len(tv)))):
+        tm = t[mask]
+        if not len(tm):
+            continue
+        starts = np.r_[True, tm[1:] != tm[:-1]]
+        idx = np.arange(len(tm))
+        slot = idx - np.maximum.accumulate(np.where(starts, idx, 0))
+        if base is not None:
+            slot = slot + base[tm]
+        fit = slot < per
+        out[tm[fit], slot[fit]] = item[mask][fit] + 1
+    return out
+
+
+def _smooth_fold_deg():
+    from .radius_clamp import SMOOTH_FOLD_DEG
+    return SMOOTH_FOLD_DEG
+
+
+def _thinnest(tri_verts, corners, tris):
+    """The least height of the triangles `tris` (mesh indices) over their longest side."""
+    if not len(tris):
+        return np.inf
+    a, b, c = (corners[tris, k] for k in range(3))
+    area2 = np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    longest = np.max(np.stack([np.linalg.norm(b - a, axis=1), np.linalg.norm(c - b, axis=1),
+                               np.linalg.norm(a - c, axis=1)]), axis=0)
+    return float(np.min(area2 / np.maximum(longest, 1e-30)))
+
+
+def records(extract):
+    """(edges (M, EDGE_TEXELS, 4), corners (K, CORNER_TEXELS, 4), {slot: (T, EDGES_PER_TRIANGLE
+    + CORNERS_PER_TRIANGLE) float32 edge numbers + 1, then corner numbers + 1, for the triangles
+    of the slot's surface batch in batch order}), the slots only where a strip or a corner may
+    cross one of their triangles; None without convex rounded edges. A triangle lists its own
+    sides first, then the nearest."""
+    slots = list(extract.slot_triangles.items())
+    edges, faces, verts = _edges(extract)
+    if not slots or not len(edges):
+        return None
+    order = np.concatenate([tris for _, tris in slots])  # batch position -> triangle
+    pos_of = np.empty(len(order), np.int64)
+    pos_of[order] = np.arange(len(order))
+    n1, n2 = edges[:, 0, :3].astype(np.float64), edges[:, 1, :3].astype(np.float64)
+    cos_half = np.sqrt(np.clip(0.5 * (1.0 + np.einsum("ij,ij->i", n1, n2) / np.maximum(
+        np.linalg.norm(n1, axis=1) * np.linalg.norm(n2, axis=1), 1e-30)), 1e-6, 1.0))
+    widest = edges[:, 0, 3] * (1.0 / cos_half - 1.0)
+    p0, p1 = edges[:, 2, :3].astype(np.float64), edges[:, 3, :3].astype(np.float64)
+    corners, cverts = _corners(extract)
+    reach = np.linalg.norm(corners[:, 0, :3] - corners[:, 1, :3], axis=1)
+    d = extract.edge_data
+    tri_verts = getattr(d, "tri_verts", None) if d is not None else None
+    polys = getattr(d, "polygons", None) if d is not None else None
+    corners_of = np.asarray(extract.corner_pos, np.float64).reshape(-1, 3, 3)
+    if tri_verts is not None and polys is not None and polys.normal is not None and np.all(verts >= 0):
+        tri_verts = np.asarray(tri_verts, np.int64)
+        tri_normal = np.asarray(polys.normal, np.float32)[np.asarray(polys.tri_poly, np.int64)]
+        # Faces wider than every strip and corner zone round them: the fans of the items'
+        # vertices hold every triangle they cross (a box, a grid of cubes).
+        near = np.isin(tri_verts, np.r_[verts.reshape(-1), cverts]).any(axis=1)
+        if max(widest.max(initial=0.0), reach.max(initial=0.0)) < _thinnest(tri_verts, corners_of, np.flatnonzero(near)):
+            unit = lambda n: (n / np.maximum(np.linalg.norm(n, axis=-1, keepdims=True), 1e-30)).astype(np.float32)  # noqa: E731
+            lists = np.concatenate([
+                _fans(tri_verts, tri_normal, order, verts, unit(np.stack([n1, n2], axis=1)), EDGES_PER_TRIANGLE, verts),
+                _fans(tri_verts, tri_normal, order, cverts[:, None], unit(corners[:, 2:5, :3].astype(np.float64)),
+                      CORNERS_PER_TRIANGLE)], axis=1)
+            return edges, corners, _by_slot(slots, lists)
+    own = np.concatenate([order[faces[:, 0]], order[faces[:, 1]]])
+    tri, rec = _reach(extract, verts.reshape(-1), np.repeat(np.arange(len(edges)), 2), np.stack([n1, n2], axis=1),
+                      p0, p1, widest)
+    # Nearest first, own sides before all.
+    dist = _segment_distance(corners_of[tri], p0[rec], p1[rec]).min(axis=1) if len(tri) else np.zeros(0)
+    lists = [_lists(len(order), pos_of[np.concatenate([own, tri])], np.concatenate([np.tile(np.arange(len(edges)), 2), rec]),
+                    np.r_[np.full(len(own), -1.0), dist], EDGES_PER_TRIANGLE)]
+    if len(corners):
+        # The corner's zone reaches from its vertex to where the ball touches the faces, under
+        # the ball's centre's distance from the vertex.
+        v = corners[:, 1, :3].astype(np.float64)
+        tri, rec = _reach(extract, cverts, np.arange(len(corners)), corners[:, 2:5, :3].astype(np.float64), v, v, reach)
+        dist = np.linalg.norm(corners_of[tri] - v[rec][:, None, :], axis=2).min(axis=1) if len(tri) else np.zeros(0)
+        lists.append(_lists(len(order), pos_of[tri], rec, dist, CORNERS_PER_TRIANGLE))
+    else:
+        lists.append(np.zeros((len(order), CORNERS_PER_TRIANGLE), np.float32))
+    return edges, corners, _by_slot(slots, np.concatenate(lists, axis=1))
+
+
+def _by_slot(slots, lists):
+    """{slot: its triangles' rows of `lists`} for the slots with any item listed."""
+    out, at = {}, 0
+    for slot, tris in slots:
+        part = lists[at:at + len(tris)]
+        at += len(tris)
+        if np.any(part > 0.0):
+            out[slot] = part
+    return out

@@ -1,0 +1,163 @@
+/* Where a rounded silhouette pulls the part's outline in (docs/highlight_math.md, "The fillet's
+ * outline"). A convex fillet of radius r between faces with unit normals Na, Nb has its axis r
+ * inside both, and the sharp edge lies r C from the axis, C = (Na + Nb) / (1 + Na.Nb). Where one
+ * face faces the eye and the other does not, the fillet's outline is the circle's extreme point
+ * across the view, r from the axis along P = (Na x Nb) x V / |...|, and the sharp edge's image
+ * lies r |P.C| from it: the outline moves in by r (|P.C| - 1). The strip between shows what lies
+ * behind the part. Where two silhouettes meet at a corner patch, the fillets meet on its ball, and
+ * past the feet of the ball's centre on both lines the outline is the ball's circle. Needs the
+ * samplers outline_edges, outline_corners and outline_triangles, and their layouts as defines
+ * (EL_OUTLINE_*: rounded_outline.py's constants, passes/surface_pass.py). */
+#ifdef EL_ROUNDED_OUTLINE
+/* For each of triangle `tri`'s listed edges, at this vertex (clip position `clip`): `dist`, its
+ * signed distance in pixels from the edge's image line, `along`, where its foot lies on the
+ * edge's image (0 and 1: the ends; both affine on screen, so interpolated without perspective
+ * they are exact at every pixel), and the strip's width in pixels at the edge's two ends
+ * (returned: at p0, `strip1`: at p1; 0 where the edge is no silhouette there), which a pixel
+ * takes at its foot. Judged at the edge's own ends, the strip is the same on both its faces and
+ * the triangle's three vertices agree on it. A polygon's other triangles meet the line beyond
+ * the edge too (a gear's face round its teeth): the strip runs along the edge alone. */
+vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out vec4 strip1)
+{
+  dist = vec4(0.0);
+  along_t = vec4(0.0);
+  strip1 = vec4(0.0);
+  vec4 strip0 = vec4(0.0);
+  if (!(clip.w > 0.0)) {
+    return strip0;
+  }
+  bool persp = frame.eye.w > 0.5;
+  mat3 nm = el_normal_matrix(model);
+  float scale = length(mat3(model) * normalize(vec3(1.0))); /* as the edge pass scales its radius */
+  vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy;
+  vec4 list = texelFetch(outline_triangles, ivec2((tri % EL_OUTLINE_TRIANGLES_PER_ROW) * EL_OUTLINE_TRIANGLE_TEXELS, tri / EL_OUTLINE_TRIANGLES_PER_ROW), 0);
+  for (int k = 0; k < 4; k++) {
+    int e = int(list[k] + 0.5) - 1;
+    if (e < 0) {
+      continue;
+    }
+    ivec2 at = ivec2((e % EL_OUTLINE_EDGES_PER_ROW) * EL_OUTLINE_EDGE_TEXELS, e / EL_OUTLINE_EDGES_PER_ROW);
+    vec4 t0 = texelFetch(outline_edges, at, 0);
+    vec3 na = normalize(nm * t0.xyz);
+    vec3 nb = normalize(nm * texelFetch(outline_edges, at + ivec2(1, 0), 0).xyz);
+    vec3 w0 = (model * vec4(texelFetch(outline_edges, at + ivec2(2, 0), 0).xyz, 1.0)).xyz;
+    vec3 w1 = (model * vec4(texelFetch(outline_edges, at + ivec2(3, 0), 0).xyz, 1.0)).xyz;
+    vec3 C = (na + nb) / max(1.0 + dot(na, nb), 1e-3);
+    vec3 E = cross(na, nb);
+    vec2 width = vec2(0.0);
+    for (int end = 0; end < 2; end++) {
+      vec3 to_eye = persp ? frame.eye.xyz - (end == 0 ? w0 : w1) : -frame.view_dir.xyz;
+      vec3 V = normalize(to_eye);
+      vec3 P = cross(E, V);
+      float len = length(P);
+      if (dot(na, V) * dot(nb, V) < 0.0 && len > 1e-6) {
+        float px_per_world = frame.camera.x / (persp ? max(length(to_eye), 1e-30) : 1.0);
+        width[end] = t0.w * scale * max(abs(dot(P / len, C)) - 1.0, 0.0) * px_per_world;
+      }
+    }
+    if (!(max(width.x, width.y) > 0.0)) {
+      continue; /* both faces on one side of the eye at both ends: no silhouette */
+    }
+    vec4 c0 = frame.projection * (frame.view * vec4(w0, 1.0));
+    vec4 c1 = frame.projection * (frame.view * vec4(w1, 1.0));
+    vec2 s0 = (c0.xy / c0.w * 0.5 + 0.5) * frame.viewport.xy;
+    vec2 along = (c1.xy / c1.w * 0.5 + 0.5) * frame.viewport.xy - s0;
+    float l = length(along);
+    if (!(c0.w > 0.0) || !(c1.w > 0.0) || !(l > 1e-6)) {
+      continue; /* behind the eye, or seen end-on: its strip is a point */
+    }
+    dist[k] = (along.x * (s.y - s0.y) - along.y * (s.x - s0.x)) / l;
+    along_t[k] = dot(s - s0, along) / (l * l);
+    strip0[k] = width.x;
+    strip1[k] = width.y;
+  }
+  return strip0;
+}
+
+/* The image of world direction d at the point whose clip position is c, in pixels (up to a
+ * positive factor): the derivative of the perspective divide. */
+vec2 el_outline_screen_dir(vec3 d, vec4 c)
+{
+  vec4 dc = frame.projection * (frame.view * vec4(d, 0.0));
+  return (dc.xy * c.w - c.xy * dc.w) * frame.viewport.xy;
+}
+
+/* For each of triangle `tri`'s listed corner patches where exactly two of its three edges are
+ * silhouettes (judged at the corner's vertex, so the triangle's vertices agree): its `zone` =
+ * (this vertex's image less the ball centre's, b, and that difference along each of the two
+ * edges' images towards the vertex; all affine on screen), and the ball's image radius in pixels
+ * (returned; 0: no such corner). A pixel past both feet (both along-values positive) and outside
+ * the circle lies past the rounded outline. */
+vec4 el_outline_corners(int tri, vec4 clip, out vec4 zone0, out vec4 zone1, out vec4 zone2, out vec4 zone3)
+{
+  zone0 = vec4(0.0);
+  zone1 = vec4(0.0);
+  zone2 = vec4(0.0);
+  zone3 = vec4(0.0);
+  vec4 ball = vec4(0.0);
+  if (!(clip.w > 0.0)) {
+    return ball;
+  }
+  vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy;
+  vec4 list = texelFetch(outline_triangles, ivec2((tri % EL_OUTLINE_TRIANGLES_PER_ROW) * EL_OUTLINE_TRIANGLE_TEXELS + 1, tri / EL_OUTLINE_TRIANGLES_PER_ROW), 0);
+  float scale = length(mat3(model) * normalize(vec3(1.0)));
+  mat3 nm = el_normal_matrix(model);
+  bool persp = frame.eye.w > 0.5;
+  for (int q = 0; q < 4; q++) {
+    int c = int(list[q] + 0.5) - 1;
+    if (c < 0) {
+      continue;
+    }
+    ivec2 at = ivec2((c % EL_OUTLINE_CORNERS_PER_ROW) * EL_OUTLINE_CORNER_TEXELS, c / EL_OUTLINE_CORNERS_PER_ROW);
+    vec3 vert = (model * vec4(texelFetch(outline_corners, at + ivec2(1, 0), 0).xyz, 1.0)).xyz;
+    vec3 n[3];
+    for (int k = 0; k < 3; k++) {
+      n[k] = normalize(nm * texelFetch(outline_corners, at + ivec2(2 + k, 0), 0).xyz);
+    }
+    vec3 V = normalize(persp ? frame.eye.xyz - vert : -frame.view_dir.xyz);
+    /* Edge A lies between sectors CA and AB, B between AB and BC, C between BC and CA. */
+    bvec3 sil;
+    for (int k = 0; k < 3; k++) {
+      sil[k] = dot(n[(k + 2) % 3], V) * dot(n[k], V) < 0.0;
+    }
+    if (int(sil.x) + int(sil.y) + int(sil.z) != 2) {
+      continue;
+    }
+    vec4 t0 = texelFetch(outline_corners, at, 0);
+    vec3 centre = (model * vec4(t0.xyz, 1.0)).xyz;
+    vec4 cb = frame.projection * (frame.view * vec4(centre, 1.0));
+    if (!(cb.w > 0.0)) {
+      continue;
+    }
+    vec4 cv = frame.projection * (frame.view * vec4(vert, 1.0));
+    vec2 t[2];
+    int found = 0;
+    for (int k = 0; k < 3; k++) {
+      if (sil[k]) {
+        vec3 d = cross(n[(k + 2) % 3], n[k]);
+        d = dot(d, n[(k + 1) % 3]) > 0.0 ? -d : d; /* away from the vertex, under the third face */
+        vec2 img = -el_outline_screen_dir(d, cv);
+        t[found] = length(img) > 0.0 ? normalize(img) : vec2(0.0);
+        found++;
+      }
+    }
+    vec2 b = (cb.xy / cb.w * 0.5 + 0.5) * frame.viewport.xy;
+    float dist = persp ? max(length(frame.eye.xyz - centre), 1e-30) : 1.0;
+    vec4 z = vec4(s - b, dot(s - b, t[0]), dot(s - b, t[1]));
+    if (q == 0) {
+      zone0 = z;
+    }
+    else if (q == 1) {
+      zone1 = z;
+    }
+    else if (q == 2) {
+      zone2 = z;
+    }
+    else {
+      zone3 = z;
+    }
+    ball[q] = t0.w * scale * frame.camera.x / dist;
+  }
+  return ball;
+}
+#endif

@@ -1,0 +1,179 @@
+"""Which rounded edges each surface triangle lists for the strip a rounded silhouette leaves out
+(addon/rounded_outline.py), on meshes small enough to know the answer: a box (each half of a
+face lists its own sides first, then its quad's other two, which touch its corners), a box whose
+faces are grids of quads (the strip reaches across the facets along an edge, as far as its widest,
+and no farther), an L-shaped prism (its concave edge is listed nowhere: a concave fillet moves no
+outline in), and a box with unrounded edges (nothing to list)."""
+import types
+import unittest
+
+import numpy as np
+
+from addon_modules import addon_module
+from small_meshes import box, edge_frame, mesh
+
+rounded_outline = addon_module("rounded_outline")
+edge_choice = addon_module("edge_choice")
+corner_patches = addon_module("corner_patches")
+
+
+def extract_of(positions, edges, polys, tris, rounded, radius=0.1, corners=False):
+    """The parts of a MeshExtract that rounded_outline reads: one slot, the triangles in order
+    (surface id = triangle + 1), the rounded edges' EdgeSet (with its corner patches)."""
+    normals, faces = edge_frame(positions, edges, polys, tris)
+    sel = np.flatnonzero(rounded)
+    e = edge_choice.EdgeSet(positions[edges[sel, 0]], positions[edges[sel, 1]], normals[sel, :3], normals[sel, 3:],
+                            np.full(len(sel), radius, np.float32), faces=(faces[sel] + 1).astype(np.float32),
+                            verts=edges[sel])
+    if corners:
+        e.corners = corner_patches.find(edges, positions, normals, np.ones(len(edges), bool), np.asarray(rounded, bool),
+                                        np.full(len(edges), radius, np.float32))
+    return types.SimpleNamespace(
+        slot_triangles={0: np.arange(len(tris))}, corner_pos=positions[tris.reshape(-1)],
+        edges={0: e} if len(sel) else {}, edge_data=types.SimpleNamespace(polygons=polys, tri_verts=tris)), sel
+
+
+def grid_box(n):
+    """A unit box whose faces are n x n grids of quads."""
+    index, verts, polys_list = {}, [], []
+
+    def vert(p):
+        key = tuple(round(c, 6) for c in p)
+        if key not in index:
+            index[key] = len(verts)
+            verts.append(key)
+        return index[key]
+    for axis in range(3):
+        for side in (0.0, 1.0):
+            u, v = [a for a in range(3) if a != axis]
+            for i in range(n):
+                for j in range(n):
+                    quad = []
+                    for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1)):
+                        p = [0.0, 0.0, 0.0]
+                        p[axis], p[u], p[v] = side, (i + di) / n, (j + dj) / n
+                        quad.append(vert(p))
+                    polys_list.append(quad if (side == 1.0) == (axis != 1) else quad[::-1])
+    return mesh(verts, polys_list)
+
+
+def box_edges(positions, edges):
+    """(E,) bool: the edges lying on the box's 12 edges."""
+    return np.array([sum(positions[a][k] == positions[b][k] and positions[a][k] in (0.0, 1.0) for k in range(3)) == 2
+                     for a, b in edges])
+
+
+def listed(lists):
+    """Per triangle, the set of listed edges' numbers."""
+    return [set(int(x) - 1 for x in row[:rounded_outline.EDGES_PER_TRIANGLE] if x > 0) for row in lists]
+
+
+class RoundedOutline(unittest.TestCase):
+    def test_box_halves_list_their_quad(self):
+        positions, edges, polys, tris = box()
+        ex, sel = extract_of(positions, edges, polys, tris, np.ones(len(edges), bool))
+        recs, _, lists = rounded_outline.records(ex)
+        self.assertEqual(len(recs), 12)
+        np.testing.assert_allclose(recs[:, 0, 3], 0.1)
+        rows = lists[0]
+        for t, row in enumerate(rows):
+            quad = polys.tri_poly[t]
+            sides = set(polys.loop_edge[polys.start[quad]:polys.start[quad] + 4])
+            self.assertEqual(set(sel[list(listed([row])[0])]), sides, f"triangle {t}")
+            # The first two are its own sides: both their ends are its corners.
+            for k in range(2):
+                ends = positions[edges[sel[int(row[k]) - 1]]]
+                corners = positions[tris[t]]
+                self.assertTrue(all(np.any(np.all(corners == p, axis=1)) for p in ends), f"triangle {t} slot {k}")
+
+    def test_strip_reaches_across_facets(self):
+        """A unit box whose faces are 8 x 8 grids (cells 0.125 wide), only its 12 box edges
+        rounded, r = 0.9: the strip is at most r (sqrt 2 - 1) = 0.373 wide, so the bottom face's
+        triangles list the edge along y = 0 out to the row of cells at 0.25-0.375 (its near
+        corners within reach) and not the row beyond."""
+        n = 8
+        positions, edges, polys, tris = grid_box(n)
+        on_box_edge = box_edges(positions, edges)
+        ex, sel = extract_of(positions, edges, polys, tris, on_box_edge, radius=0.9)
+        recs, _, lists = rounded_outline.records(ex)
+        self.assertEqual(len(recs), n * 12)
+        # The bottom face (z = 0): its triangles' centres, and whether they list an edge piece
+        # on y = 0, z = 0.
+        along = [k for k in range(len(recs)) if np.all(recs[k, 2:4, 1:3] == 0.0)]
+        self.assertEqual(len(along), n)
+        # Away from the corners, where the pieces of the edges along x = 0 and x = 1 are nearer.
+        bottom = [t for t in range(len(tris)) if np.all(positions[tris[t], 2] == 0.0)
+                  and 0.375 <= positions[tris[t], 0].min() and positions[tris[t], 0].max() <= 0.625]
+        for t in bottom:
+            y = positions[tris[t], 1].min()
+            lists_it = bool(listed([lists[0][t]])[0] & set(along))
+            if y >= 0.375:
+                self.assertFalse(lists_it, f"triangle {t} at y >= {y}")
+            else:
+                self.assertTrue(lists_it, f"triangle {t} at y >= {y}")
+
+    def test_corner_zone_reaches_across_facets(self):
+        """The grid box (cells 0.25), its box edges rounded at r = 0.3: each corner's zone reaches
+        r sqrt 3 = 0.52 from its vertex, so on the bottom face the cell at 0.25-0.5 on both sides
+        of the corner at the origin lists it (past the vertex's own fan), and every triangle
+        listing a corner has a vertex within that reach of it."""
+        positions, edges, polys, tris = grid_box(4)
+        ex, _ = extract_of(positions, edges, polys, tris, box_edges(positions, edges), radius=0.3, corners=True)
+        _, corners, lists = rounded_outline.records(ex)
+        self.assertEqual(len(corners), 8)
+        origin = [k for k in range(8) if np.allclose(corners[k, 1, :3], 0.0)]
+        self.assertEqual(len(origin), 1)
+        per = rounded_outline.EDGES_PER_TRIANGLE
+        # The cell's half with a corner at (0.25, 0.25), 0.35 from the vertex (the other half's
+        # nearest point is 0.53 away).
+        cell = [t for t in range(len(tris)) if np.all(positions[tris[t], 2] == 0.0)
+                and positions[tris[t], :2].min() >= 0.25 and positions[tris[t], :2].max() <= 0.5
+                and np.any(np.all(positions[tris[t], :2] == 0.25, axis=1))]
+        self.assertEqual(len(cell), 1)
+        for t in cell:
+            self.assertIn(origin[0] + 1, lists[0][t, per:].tolist(), f"triangle {t}")
+        for t, row in enumerate(lists[0]):
+            for k in (int(x) - 1 for x in row[per:] if x > 0):
+                near = np.linalg.norm(positions[tris[t]] - corners[k, 1, :3], axis=1).min()
+                self.assertLess(near, 0.3 * np.sqrt(3.0) + 1e-6, f"triangle {t} corner {k}")
+
+    def test_fans_and_walk_agree(self):
+        """Faces wider than the strips take the fans of the edges' ends alone, unsorted; the
+        walk across patches, forced, lists the same edges per triangle (a box and a prism with a
+        reflex corner)."""
+        positions, edges, polys, tris = box()
+        ex, _ = extract_of(positions, edges, polys, tris, np.ones(len(edges), bool))
+        fast = rounded_outline.records(ex)[2][0]
+        thinnest = rounded_outline._thinnest
+        rounded_outline._thinnest = lambda *args: 0.0
+        try:
+            walked = rounded_outline.records(ex)[2][0]
+        finally:
+            rounded_outline._thinnest = thinnest
+        self.assertEqual(listed(fast), listed(walked))
+        self.assertTrue(all(len(x) == 4 for x in listed(fast)))
+
+    def test_concave_edge_is_not_listed(self):
+        outline = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]  # (1, 1) is the reflex corner
+        n = len(outline)
+        verts = [(x, y, 0.0) for x, y in outline] + [(x, y, 1.0) for x, y in outline]
+        polys_list = [list(range(n))[::-1], [i + n for i in range(n)]]
+        polys_list += [[i, (i + 1) % n, (i + 1) % n + n, i + n] for i in range(n)]
+        positions, edges, polys, tris = mesh(verts, polys_list)
+        ex, sel = extract_of(positions, edges, polys, tris, np.ones(len(edges), bool))
+        recs, _, lists = rounded_outline.records(ex)
+        reflex = [i for i, (a, b) in enumerate(edges[sel]) if {a, b} == {3, 3 + n}]
+        self.assertEqual(len(reflex), 1)
+        self.assertEqual(len(recs), len(sel) - 1)
+        # The records hold the convex edges' ends; none is the reflex edge's.
+        ends = {tuple(sorted(map(tuple, r[2:4, :3].tolist()))) for r in recs}
+        self.assertNotIn(tuple(sorted([tuple(positions[3]), tuple(positions[3 + n])])), ends)
+
+    def test_nothing_rounded_lists_nothing(self):
+        positions, edges, polys, tris = box()
+        ex, _ = extract_of(positions, edges, polys, tris, np.zeros(len(edges), bool))
+        self.assertIsNone(rounded_outline.records(ex))
+
+
+if __name__ == "__main__":
+    unittest.main()
