@@ -22,14 +22,6 @@ float el_pulled_depth(vec3 at, float half_px)
   return cp.w > 0.0 && z > -1.0 ? z : -1.0;
 }
 
-/* The image of world direction d at the point whose clip position is c, in pixels (up to a
- * positive factor): the derivative of the perspective divide. */
-vec2 el_screen_dir(vec3 d, vec4 c)
-{
-  vec4 dc = frame.projection * (frame.view * vec4(d, 0.0));
-  return (dc.xy * c.w - c.xy * dc.w) * frame.viewport.xy;
-}
-
 /* A band's cut at an end vertex (band_ends.py), as the unit screen normal of its line pointing to
  * the band's body. u: along the edge from this end, inside: the face's inside across the edge
  * (object space), phi: the cut's angle from the edge towards the inside. A cut seen end-on

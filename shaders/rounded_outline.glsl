@@ -74,14 +74,6 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
   return strip0;
 }
 
-/* The image of world direction d at the point whose clip position is c, in pixels (up to a
- * positive factor): the derivative of the perspective divide. */
-vec2 el_outline_screen_dir(vec3 d, vec4 c)
-{
-  vec4 dc = frame.projection * (frame.view * vec4(d, 0.0));
-  return (dc.xy * c.w - c.xy * dc.w) * frame.viewport.xy;
-}
-
 /* For each of triangle `tri`'s listed corner patches where exactly two of its three edges are
  * silhouettes (judged at the corner's vertex, so the triangle's vertices agree): its `zone` =
  * (this vertex's image less the ball centre's, b, and that difference along each of the two
@@ -136,7 +128,7 @@ vec4 el_outline_corners(int tri, vec4 clip, out vec4 zone0, out vec4 zone1, out 
       if (sil[k]) {
         vec3 d = cross(n[(k + 2) % 3], n[k]);
         d = dot(d, n[(k + 1) % 3]) > 0.0 ? -d : d; /* away from the vertex, under the third face */
-        vec2 img = -el_outline_screen_dir(d, cv);
+        vec2 img = -el_screen_dir(d, cv);
         t[found] = length(img) > 0.0 ? normalize(img) : vec2(0.0);
         found++;
       }
