@@ -30,8 +30,10 @@ void main()
   bool front = gl_FrontFacing == (determinant(mat3(model)) >= 0.0);
 #ifdef EL_SURFACE_IDS
   /* Which instance and face covers the pixel, for the line pass's visibility (docs/lines.md):
-   * surface_ids.y is the id of the batch's first triangle; 0 where nothing was drawn. */
-  out_id = vec2(surface_ids.x, surface_ids.y + float(gl_PrimitiveID));
+   * surface_ids.y is the id of the batch's first triangle; 0 where nothing was drawn. The
+   * triangle's number comes from its vertices (surface_tri), since a slot's triangles may be
+   * drawn as two indexed subsets. */
+  out_id = vec2(surface_ids.x, surface_ids.y + surface_tri);
 #endif
 #ifdef EL_NORMAL_PASS
   /* The Normal render pass: world space, facing the camera, as Cycles writes it. Only the

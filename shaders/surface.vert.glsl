@@ -7,8 +7,10 @@ void main()
   vec4 v = frame.view * world;
   view_depth = -v.z;
   gl_Position = frame.projection * v;
+  /* Three vertices per triangle, in order, whether all are drawn or an indexed subset
+   * (passes/batches.py): the triangle's number in its slot's batch. */
+  surface_tri = float(gl_VertexID / 3);
 #ifdef EL_ROUNDED_OUTLINE
-  /* The batch is three vertices per triangle, in order (passes/batches.py). */
   outline_strip0 = el_outline_strips(gl_VertexID / 3, gl_Position, outline_dist, outline_along, outline_strip1);
   outline_ball = el_outline_corners(gl_VertexID / 3, gl_Position, outline_corner0, outline_corner1, outline_corner2,
                                     outline_corner3);

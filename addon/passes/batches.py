@@ -18,13 +18,22 @@ def _vertbuf(attrs):
     return vbo
 
 
-def surface_batches(extract):
+def surface_buffers(extract):
+    """slot -> its triangles' vertex buffer, three vertices per triangle in order: a triangle's
+    number is gl_VertexID / 3 however its vertices are drawn (shaders/surface.vert.glsl)."""
     out = {}
     for slot, tris in extract.slot_triangles.items():
         corners = (tris[:, None] * 3 + np.arange(3)).reshape(-1)
-        vbo = _vertbuf({"pos": extract.corner_pos[corners], "nor": extract.corner_nor[corners]})
-        out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo)
+        out[slot] = _vertbuf({"pos": extract.corner_pos[corners], "nor": extract.corner_nor[corners]})
     return out
+
+
+def _triangles_batch(vbo, triangles):
+    """The given triangles of a surface vertex buffer, indexed; None for none."""
+    if not len(triangles):
+        return None
+    idx = (np.asarray(triangles, np.int64)[:, None] * 3 + np.arange(3)).astype(np.int32)
+    return gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
 
 
 def _float_rows(items, per_row, limit):
@@ -40,8 +49,9 @@ def _float_rows(items, per_row, limit):
 
 
 def outline_textures(extract):
-    """slot -> (edge, corner, triangle textures) of rounded_outline.records, for the slots a
-    strip or a corner may cross. Past what a texture holds, the outline stays the sharp mesh's."""
+    """slot -> (edge, corner, triangle textures) of rounded_outline.records, and which of the
+    slot's triangles list anything, for the slots a strip or a corner may cross. Past what a
+    texture holds, the outline stays the sharp mesh's."""
     recs = rounded_outline.records(extract)
     if recs is None:
         return {}
@@ -56,7 +66,7 @@ def outline_textures(extract):
         tris = _float_rows(texels.reshape(len(lists), rounded_outline.TRIANGLE_TEXELS, 4),
                            rounded_outline.TRIANGLES_PER_ROW, limit)
         if edges is not None and corners is not None and tris is not None:
-            out[slot] = (edges, corners, tris)
+            out[slot] = ((edges, corners, tris), np.flatnonzero(np.any(lists > 0.0, axis=1)))
     return out
 
 
@@ -132,7 +142,8 @@ class GpuMesh:
     def __init__(self, extract, line_chunk=None):
         self.extract = extract
         self.line_chunk = line_chunk  # segments per line batch (line_pass.line_batches)
-        self.surface = surface_batches(extract)
+        self.surface_vbo = surface_buffers(extract)
+        self.surface = {slot: gpu.types.GPUBatch(type='TRIS', buf=vbo) for slot, vbo in self.surface_vbo.items()}
         self.rebuild_edges()
         self.rebuild_lines()
 
@@ -144,7 +155,15 @@ class GpuMesh:
     def rebuild_edges(self):
         self.edges = edge_batches(self.extract)
         self.corners = corner_batches(self.extract)
-        self.outline = outline_textures(self.extract)
+        # The slots a rounded silhouette may pull in: their textures, and their triangles in two
+        # batches over the slot's vertex buffer, those that list a strip or a corner (drawn
+        # by the program that walks the lists) and the rest (by the plain one). Mixed in one
+        # batch, every vertex group on llvmpipe would pay for the walk.
+        self.outline = {}
+        for slot, (textures, listed) in outline_textures(self.extract).items():
+            vbo = self.surface_vbo[slot]
+            rest = np.setdiff1d(np.arange(len(self.extract.slot_triangles[slot])), listed)
+            self.outline[slot] = (textures, _triangles_batch(vbo, listed), _triangles_batch(vbo, rest))
         self.edge_count = sum(len(e) for e in self.extract.edges.values())
 
 

@@ -43,9 +43,10 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
     """One program per shading mode in use (EL_SURFACE_MODE is fixed when it is built: a uniform
     branch would make every fragment pay for every mode on llvmpipe). With `ids`, the variant
     that also writes which instance and face covers each pixel (the line pass's visibility,
-    docs/lines.md). With `rounded` (the edge pass draws the bands), slots with rounded convex
-    edges leave out the strip between a sharp silhouette and its fillet's outline
-    (rounded_outline.glsl), in their own variant."""
+    docs/lines.md). With `rounded` (the edge pass draws the bands), the triangles a rounded
+    convex edge's strip or a corner's zone may cross leave out the strip between a sharp
+    silhouette and its fillet's outline (rounded_outline.glsl), in their own variant and batch
+    (batches.GpuMesh.outline)."""
     draws, firsts = {}, {}
     for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
@@ -54,9 +55,16 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
         first = firsts.get(id(gm.extract), {})
         for slot, batch in gm.surface.items():
             s = gm.extract.slot_shading[slot]
-            sides = gm.outline.get(slot) if rounded else None
-            draws.setdefault((_surface_mode(s, whiteout), sides is not None), []).append(
-                (inst.matrix, s, batch, (float(index + 1), float(first.get(slot, 0))), sides))
+            mode = _surface_mode(s, whiteout)
+            ids_of = (float(index + 1), float(first.get(slot, 0)))
+            outline = gm.outline.get(slot) if rounded else None
+            if outline is None:
+                draws.setdefault((mode, False), []).append((inst.matrix, s, batch, ids_of, None))
+                continue
+            textures, listed, rest = outline
+            if rest is not None:
+                draws.setdefault((mode, False), []).append((inst.matrix, s, rest, ids_of, None))
+            draws.setdefault((mode, True), []).append((inst.matrix, s, listed, ids_of, textures))
     outputs = surface_outputs(targets, ids)
     with pass_state.drawing("surface", targets.surface_ids_fb if ids else targets.surface_fb):
         for (mode, outline), items in sorted(draws.items()):

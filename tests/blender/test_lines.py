@@ -90,10 +90,14 @@ class Silhouettes(unittest.TestCase):
 
 
 class Creases(unittest.TestCase):
-    def render_cube(self, **scene_settings):
+    def render_cube(self, cuts=0, **scene_settings):
         scene = helpers.empty_scene(480, 480, **scene_settings)
         helpers.only_lines(scene, crease=3.0)
         bpy.ops.mesh.primitive_cube_add(size=2.0)
+        if cuts:
+            bpy.ops.object.mode_set(mode='EDIT')
+            bpy.ops.mesh.subdivide(number_cuts=cuts)
+            bpy.ops.object.mode_set(mode='OBJECT')
         self.eye = (4.0, -5.5, 3.5)
         helpers.add_camera(self.eye)
         helpers.add_sun()
@@ -120,6 +124,23 @@ class Creases(unittest.TestCase):
     def test_cube_shows_its_visible_creases_and_no_hidden_ones(self):
         vis, alpha = self.edge_alphas(self.render_cube())
         self.assertEqual(int(vis.sum()), 9)
+        self.assertTrue((alpha[vis] > 0.99).all(), alpha[vis].min(axis=1))
+        hidden = alpha[~vis]
+        self.assertGreater(np.isfinite(hidden).sum(), 20, "enough points of hidden edges judged")
+        self.assertTrue((hidden[np.isfinite(hidden)] == 0.0).all(), np.nanmax(hidden, axis=1))
+
+    def test_hidden_creases_of_a_cube_drawn_in_two_batches(self):
+        # Subdivided, the faces' middle triangles list no rounded silhouette's strip, and the
+        # surface pass draws them apart from those along the edges (passes/batches.py): the
+        # face ids the visibility reads must still be each triangle's own.
+        rec = self.render_cube(cuts=4)
+        el = helpers.addon()
+        lib, error = el.engine.load_library()
+        self.assertIsNotNone(lib, error)
+        extract = el.scene_sync.collect(bpy.context.evaluated_depsgraph_get(), lib=lib).instances[0].mesh
+        listed = np.concatenate([np.any(rows > 0.0, axis=1) for rows in el.rounded_outline.records(extract)[2].values()])
+        self.assertTrue(listed.any() and not listed.all(), "the faces drawn in two batches")
+        vis, alpha = self.edge_alphas(rec)
         self.assertTrue((alpha[vis] > 0.99).all(), alpha[vis].min(axis=1))
         hidden = alpha[~vis]
         self.assertGreater(np.isfinite(hidden).sum(), 20, "enough points of hidden edges judged")
