@@ -64,14 +64,14 @@ def _segment_distance(points, p0, p1):
     return np.linalg.norm(points - foot, axis=-1)
 
 
-def _reach(extract, start, rec, normals, p0, p1, widest):
+def _reach(extract, start, rec, normals, p0, p1, reach):
     """(triangle, item) pairs an item's (an edge's or a corner's) strip may cross beyond its own
     faces: the triangles round its vertices `start` (with `rec`, the item), within
     radius_clamp.SMOOTH_FOLD_DEG of one of its faces' normals (`normals`, (items, K, 3): a fillet
-    runs on across a patch's facets), and on from their corners within `widest` of the item's
+    runs on across a patch's facets), and on from their corners within `reach` of the item's
     segment p0 -> p1 (a point for a corner): a quad's other half at an edge's end, the thin
     facets of a triangulated face along it. Walked vertex by vertex, so a mesh whose faces are
-    wider than the strips costs one fan per vertex."""
+    wider than the reach costs one fan per vertex."""
     d = extract.edge_data
     tri_verts = getattr(d, "tri_verts", None) if d is not None else None
     polys = getattr(d, "polygons", None) if d is not None else None
@@ -88,7 +88,7 @@ def _reach(extract, start, rec, normals, p0, p1, widest):
     by_vert = np.argsort(tv, kind="stable")
     first = np.searchsorted(tv[by_vert], np.arange(tv.max() + 2))
     unit = (normals / np.maximum(np.linalg.norm(normals, axis=2, keepdims=True), 1e-30)).astype(np.float32)
-    p0, p1, widest = p0.astype(np.float32), p1.astype(np.float32), widest.astype(np.float32)
+    p0, p1, reach = p0.astype(np.float32), p1.astype(np.float32), reach.astype(np.float32)
     m = max(len(p0), 1)
     front_v, front_r = start[ok], rec[ok]
     seen = np.unique(front_v * m + front_r)
@@ -107,7 +107,7 @@ def _reach(extract, start, rec, normals, p0, p1, widest):
         key = np.unique(tri_verts[t].reshape(-1) * m + np.repeat(r, 3))
         key = key[~np.isin(key, seen)]
         cv, cr = key // m, key % m
-        key = key[_segment_distance(vert_pos[cv][:, None, :], p0[cr], p1[cr])[:, 0] < widest[cr]]
+        key = key[_segment_distance(vert_pos[cv][:, None, :], p0[cr], p1[cr])[:, 0] < reach[cr]]
         if not len(key):
             break
         seen = np.union1d(seen, key)
@@ -234,7 +234,11 @@ def records(extract):
     n1, n2 = edges[:, 0, :3].astype(np.float64), edges[:, 1, :3].astype(np.float64)
     cos_half = np.sqrt(np.clip(0.5 * (1.0 + np.einsum("ij,ij->i", n1, n2) / np.maximum(
         np.linalg.norm(n1, axis=1) * np.linalg.norm(n2, axis=1), 1e-30)), 1e-6, 1.0))
-    widest = edges[:, 0, 3] * (1.0 / cos_half - 1.0)
+    # How far from the edge a face may show in its strip: up to where its fillet starts, the
+    # setback r tan(a/2) (a the fold). The strip itself is narrower, r (1/cos(a/2) - 1), but
+    # the face behind a silhouette, seen at a grazing angle, folds its image over the strip from
+    # farther than that; past the setback every face lies inside the fillet's outline.
+    setback = edges[:, 0, 3] * np.sqrt(1.0 - cos_half * cos_half) / cos_half
     p0, p1 = edges[:, 2, :3].astype(np.float64), edges[:, 3, :3].astype(np.float64)
     corners, cverts = _corners(extract)
     reach = np.linalg.norm(corners[:, 0, :3] - corners[:, 1, :3], axis=1)
@@ -245,10 +249,10 @@ def records(extract):
     if tri_verts is not None and polys is not None and polys.normal is not None and np.all(verts >= 0):
         tri_verts = np.asarray(tri_verts, np.int64)
         tri_normal = np.asarray(polys.normal, np.float32)[np.asarray(polys.tri_poly, np.int64)]
-        # Faces wider than every strip and corner zone round them: the fans of the items'
+        # Faces wider than every setback and corner zone round them: the fans of the items'
         # vertices hold every triangle they cross (a box, a grid of cubes).
         near = np.isin(tri_verts, np.r_[verts.reshape(-1), cverts]).any(axis=1)
-        if max(widest.max(initial=0.0), reach.max(initial=0.0)) < _thinnest(tri_verts, corners_of, np.flatnonzero(near)):
+        if max(setback.max(initial=0.0), reach.max(initial=0.0)) < _thinnest(tri_verts, corners_of, np.flatnonzero(near)):
             unit = lambda n: (n / np.maximum(np.linalg.norm(n, axis=-1, keepdims=True), 1e-30)).astype(np.float32)  # noqa: E731
             lists = np.concatenate([
                 _fans(tri_verts, tri_normal, order, verts, unit(np.stack([n1, n2], axis=1)), EDGES_PER_TRIANGLE, verts),
@@ -257,7 +261,7 @@ def records(extract):
             return edges, corners, _by_slot(slots, lists)
     own = np.concatenate([order[faces[:, 0]], order[faces[:, 1]]])
     tri, rec = _reach(extract, verts.reshape(-1), np.repeat(np.arange(len(edges)), 2), np.stack([n1, n2], axis=1),
-                      p0, p1, widest)
+                      p0, p1, setback)
     # Nearest first, own sides before all.
     dist = _segment_distance(corners_of[tri], p0[rec], p1[rec]).min(axis=1) if len(tri) else np.zeros(0)
     lists = [_lists(len(order), pos_of[np.concatenate([own, tri])], np.concatenate([np.tile(np.arange(len(edges)), 2), rec]),

@@ -52,8 +52,16 @@ void main()
    * The surface pass draws that outline rounded (rounded_outline.glsl): a silhouette's strip
    * moves it in by up to 0.41 r, and past a corner it is the ball's circle, which the bands'
    * square ends overhang. From a radius of 2 pixels on, where that reaches past a pixel, no band
-   * shows over the background. */
-  if (!(id.y > 0.0) && (edge_radius > 2.0 * world_per_px || !el_outline_fringe(ivec2(pc)))) {
+   * is laid over the background: a silhouette's band changes only the face its pixel's samples
+   * show (el_silhouette_band below), since its horizon end is that outline. */
+  bool past_outline = !(id.y > 0.0);
+  bool wide = edge_radius > 2.0 * world_per_px;
+#ifdef EL_FACES_UNDER
+  bool as_change = edge_far.w < -0.5 && base_color.a >= 1.0;
+#else
+  bool as_change = false; /* a toon band blends as a layer */
+#endif
+  if (past_outline && (!el_outline_fringe(ivec2(pc)) || (wide && !as_change))) {
     discard;
   }
   float bias = own ? 3.0e38 : 0.5 * world_per_px + 1e-5 * dist;
@@ -106,6 +114,12 @@ void main()
    * it) or past the outline (where the samples may all miss the face) it stays a layer. */
   if (edge_far.w < -0.5 && base_color.a >= 1.0 && on_faces) {
     out_color = el_silhouette_band(result, X, V, pixel1);
+    return;
+  }
+  /* A wide band's pixel past the outline: its samples show the front face within the band's
+   * horizon end, where the surface pass moved the outline to, so W is no more than they cover. */
+  if (past_outline && wide) {
+    out_color = el_silhouette_band(result, X, V, 1.0);
     return;
   }
 #endif

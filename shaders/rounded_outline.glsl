@@ -12,16 +12,20 @@
 /* For each of triangle `tri`'s listed edges, at this vertex (clip position `clip`): `dist`, its
  * signed distance in pixels from the edge's image line, `along`, where its foot lies on the
  * edge's image (0 and 1: the ends; both affine on screen, so interpolated without perspective
- * they are exact at every pixel), and the strip's width in pixels at the edge's two ends
+ * they are exact at every pixel), the strip's width in pixels at the edge's two ends
  * (returned: at p0, `strip1`: at p1; 0 where the edge is no silhouette there), which a pixel
- * takes at its foot. Judged at the edge's own ends, the strip is the same on both its faces and
+ * takes at its foot, and the edge's image length in pixels (`length_px`, the same at all three
+ * vertices). Past an end the strip ends in a half disc of its width there: where the outline
+ * turns away from the part's inside between two strips (a rim seen from above), their ends
+ * leave a wedge that the moved outline, round there as the fillets' is, still passes inside. Judged at the edge's own ends, the strip is the same on both its faces and
  * the triangle's three vertices agree on it. A polygon's other triangles meet the line beyond
  * the edge too (a gear's face round its teeth): the strip runs along the edge alone. */
-vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out vec4 strip1)
+vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out vec4 strip1, out vec4 length_px)
 {
   dist = vec4(0.0);
   along_t = vec4(0.0);
   strip1 = vec4(0.0);
+  length_px = vec4(0.0);
   vec4 strip0 = vec4(0.0);
   if (!(clip.w > 0.0)) {
     return strip0;
@@ -68,6 +72,7 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
     }
     dist[k] = (along.x * (s.y - s0.y) - along.y * (s.x - s0.x)) / l;
     along_t[k] = dot(s - s0, along) / (l * l);
+    length_px[k] = l;
     strip0[k] = width.x;
     strip1[k] = width.y;
   }

@@ -1,8 +1,8 @@
 """Which rounded edges each surface triangle lists for the strip a rounded silhouette leaves out
 (addon/rounded_outline.py), on meshes small enough to know the answer: a box (each half of a
 face lists its own sides first, then its quad's other two, which touch its corners), a box whose
-faces are grids of quads (the strip reaches across the facets along an edge, as far as its widest,
-and no farther), an L-shaped prism (its concave edge is listed nowhere: a concave fillet moves no
+faces are grids of quads (the strip's triangles reach across the facets along an edge, as far as
+the fillet's setback, and no farther), an L-shaped prism (its concave edge is listed nowhere: a concave fillet moves no
 outline in), and a box with unrounded edges (nothing to list)."""
 import types
 import unittest
@@ -88,13 +88,15 @@ class RoundedOutline(unittest.TestCase):
 
     def test_strip_reaches_across_facets(self):
         """A unit box whose faces are 8 x 8 grids (cells 0.125 wide), only its 12 box edges
-        rounded, r = 0.9: the strip is at most r (sqrt 2 - 1) = 0.373 wide, so the bottom face's
-        triangles list the edge along y = 0 out to the row of cells at 0.25-0.375 (its near
-        corners within reach) and not the row beyond."""
+        rounded, r = 0.3: a face may show in the strip out to the fillet's setback, r tan 45° =
+        0.3 (the strip itself is at most r (sqrt 2 - 1) = 0.124 wide, but a face seen at a
+        grazing angle folds its image over it from farther), so the bottom face's triangles
+        list the edge along y = 0 out to the row of cells at 0.25-0.375 (its near corners within
+        reach) and not the row beyond."""
         n = 8
         positions, edges, polys, tris = grid_box(n)
         on_box_edge = box_edges(positions, edges)
-        ex, sel = extract_of(positions, edges, polys, tris, on_box_edge, radius=0.9)
+        ex, sel = extract_of(positions, edges, polys, tris, on_box_edge, radius=0.3)
         recs, _, lists = rounded_outline.records(ex)
         self.assertEqual(len(recs), n * 12)
         # The bottom face (z = 0): its triangles' centres, and whether they list an edge piece
