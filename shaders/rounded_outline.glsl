@@ -17,9 +17,11 @@
  * takes at its foot, and the edge's image length in pixels (`length_px`, the same at all three
  * vertices). Past an end the strip ends in a half disc of its width there: where the outline
  * turns away from the part's inside between two strips (a rim seen from above), their ends
- * leave a wedge that the moved outline, round there as the fillets' is, still passes inside. Judged at the edge's own ends, the strip is the same on both its faces and
- * the triangle's three vertices agree on it. A polygon's other triangles meet the line beyond
- * the edge too (a gear's face round its teeth): the strip runs along the edge alone. */
+ * leave a wedge that the moved outline, round there as the fillets' is, still passes inside.
+ * Judged at the edge's own ends, the strip is the same on both its faces and the triangle's
+ * three vertices agree on it. A polygon's other triangles meet the line beyond the edge too (a
+ * gear's face round its teeth): the strip runs along the edge alone, and its ends' half discs
+ * reach no farther than its width. */
 vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out vec4 strip1, out vec4 length_px)
 {
   dist = vec4(0.0);
