@@ -313,7 +313,7 @@ def visible_edges(edges, matrix, camera, K):
         outside |= (c0[:, axis] > c0[:, 3]) & (c1[:, axis] > c1[:, 3])
         outside |= (c0[:, axis] < -c0[:, 3]) & (c1[:, axis] < -c1[:, 3])
     dist = np.linalg.norm(to_eye, axis=1) if not camera.orthographic else 1.0
-    # The radius's scale as the edge shader takes it (edge_highlight.vert.glsl: |M (1,1,1)/sqrt 3|).
+    # The radius's scale as the shaders take it (lighting.glsl, el_radius_scale: |M (1,1,1)/sqrt 3|).
     scale = np.linalg.norm(m[:3, :3] @ np.full(3, 1.0 / np.sqrt(3.0)))
     n1u = n1 / np.maximum(np.linalg.norm(n1, axis=1, keepdims=True), 1e-30)
     n2u = n2 / np.maximum(np.linalg.norm(n2, axis=1, keepdims=True), 1e-30)

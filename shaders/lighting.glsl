@@ -48,6 +48,13 @@ vec3 el_blinn_phong(int i, vec3 X, vec3 N, vec3 V, vec3 albedo, vec3 spec, float
   return E * (albedo * (nl / 3.14159265) + spec * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
 }
 
+/* How a radius in the object's units scales into world units under m: its linear part's effect
+ * on the unit diagonal (viewport.py culls with the same measure). */
+float el_radius_scale(mat4 m)
+{
+  return length(mat3(m) * normalize(vec3(1.0)));
+}
+
 /* The cofactor matrix of m's linear part, signed by its determinant: a normal transformed by it
  * points as el_transform_normal's, not unit (for many normals under one transform). */
 mat3 el_normal_matrix(mat4 m)

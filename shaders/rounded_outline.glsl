@@ -34,7 +34,7 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
   }
   bool persp = frame.eye.w > 0.5;
   mat3 nm = el_normal_matrix(model);
-  float scale = length(mat3(model) * normalize(vec3(1.0))); /* as the edge pass scales its radius */
+  float scale = el_radius_scale(model); /* as the edge pass scales its radius */
   vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy;
   vec4 list = texelFetch(outline_triangles, ivec2((tri % EL_OUTLINE_TRIANGLES_PER_ROW) * EL_OUTLINE_TRIANGLE_TEXELS, tri / EL_OUTLINE_TRIANGLES_PER_ROW), 0);
   for (int k = 0; k < 4; k++) {
@@ -99,7 +99,7 @@ vec4 el_outline_corners(int tri, vec4 clip, out vec4 zone0, out vec4 zone1, out 
   }
   vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy;
   vec4 list = texelFetch(outline_triangles, ivec2((tri % EL_OUTLINE_TRIANGLES_PER_ROW) * EL_OUTLINE_TRIANGLE_TEXELS + 1, tri / EL_OUTLINE_TRIANGLES_PER_ROW), 0);
-  float scale = length(mat3(model) * normalize(vec3(1.0)));
+  float scale = el_radius_scale(model);
   mat3 nm = el_normal_matrix(model);
   bool persp = frame.eye.w > 0.5;
   for (int q = 0; q < 4; q++) {

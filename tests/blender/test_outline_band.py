@@ -86,21 +86,6 @@ class BandAtTheOutline(unittest.TestCase):
             self.assertLess(err["edgelight"], 0.5 * err["sharp"], f"{width} px")
 
 
-def box_image(width_px, mode):
-    """The box of box_coverage before the world's colour: mode 'edgelight' or 'fillets'."""
-    helpers.empty_scene(*RESOLUTION, samples=64 if mode == "fillets" else 8)
-    helpers.add_camera(tuple(CAMERA))
-    helpers.add_sun((0.5, -0.8, 0.6), 4.0)
-    cube = zoo.box("Box")
-    mat = zoo.material("BoxMaterial", (0.8, 0.8, 0.8))
-    mat.edgelight.radius = zoo.radius_at_width(width_px, CAMERA, RESOLUTION[0])
-    cube.data.materials.append(mat)
-    if mode == "fillets":
-        fillets.add_fillets(bpy.context.scene, mat.edgelight.radius, 32, exact=True)
-    bpy.context.scene.edgelight.highlights = mode == "edgelight"
-    return np.asarray(helpers.render()["pixels"])[..., :3].astype(np.float64)
-
-
 class WideBandAtTheOutline(unittest.TestCase):
     def test_outline_pixels_past_the_centre_take_the_band(self):
         """At 4 and 8 px, the outline's pixels whose centres lie past it (the world behind) still
@@ -108,8 +93,8 @@ class WideBandAtTheOutline(unittest.TestCase):
         those samples show (el_silhouette_band), as it does where the centre lies on the face.
         Their colours against the fillets', over the pixels the fillets' outline crosses."""
         for width, bound in ((4.0, 0.052), (8.0, 0.067)):
-            ref = box_image(width, "fillets")
-            el = box_image(width, "edgelight")
+            ref = box_render(width, "fillets", transparent=False)[..., :3]
+            el = box_render(width, "edgelight", transparent=False)[..., :3]
             cov = box_coverage(width, "fillets")
             outline = (cov > 0.02) & (cov < 0.98)
             err = np.abs(el - ref).max(axis=2)[outline]
@@ -120,16 +105,16 @@ class WideBandAtTheOutline(unittest.TestCase):
             self.assertLess(float(err.mean()), bound, f"{width} px")
 
 
-def box_coverage(width_px, mode, ortho=False, camera=CAMERA, cuts=0):
-    """The alpha (coverage) of a unit box on a transparent film, its edges rounded at width_px
-    pixels: mode 'edgelight' (highlights on), 'sharp' (off) or 'fillets' (the Bevel modifier's
-    exactly circular fillets, highlights off, 64 samples). With `cuts`, its faces are grids of
-    (cuts + 1)^2 quads."""
+def box_render(width_px, mode, ortho=False, camera=CAMERA, cuts=0, transparent=True):
+    """The pixels of a unit box, its edges rounded at width_px pixels, on a transparent film or
+    before the world's colour: mode 'edgelight' (highlights on), 'sharp' (off) or 'fillets' (the
+    Bevel modifier's exactly circular fillets, highlights off, 64 samples). With `cuts`, its
+    faces are grids of (cuts + 1)^2 quads."""
     helpers.empty_scene(*RESOLUTION, samples=64 if mode == "fillets" else 8)
     cam = helpers.add_camera(tuple(camera))
     helpers.add_sun((0.5, -0.8, 0.6), 4.0)
     scene = bpy.context.scene
-    scene.render.film_transparent = True
+    scene.render.film_transparent = transparent
     cube = zoo.box("Box")
     if cuts:
         import bmesh
@@ -149,7 +134,12 @@ def box_coverage(width_px, mode, ortho=False, camera=CAMERA, cuts=0):
     if mode == "fillets":
         fillets.add_fillets(scene, radius, 32, exact=True)
     scene.edgelight.highlights = mode == "edgelight"
-    return np.asarray(helpers.render()["pixels"])[..., 3].astype(np.float64)
+    return np.asarray(helpers.render()["pixels"]).astype(np.float64)
+
+
+def box_coverage(width_px, mode, ortho=False, camera=CAMERA, cuts=0):
+    """The box's alpha (coverage) on a transparent film (box_render)."""
+    return box_render(width_px, mode, ortho, camera, cuts)[..., 3]
 
 
 class FilletOutline(unittest.TestCase):
