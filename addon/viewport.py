@@ -291,6 +291,21 @@ def viewport_camera(rv3d, width, height):
                         orthographic=not rv3d.is_perspective, width=width, height=height)
 
 
+def radius_scale(m, na, nb, e):
+    """Per edge, how its radius scales into world units under m (lighting.glsl, el_radius_scale:
+    the mean stretch of its two faces' directions square to it, object space)."""
+    lin = np.asarray(m, np.float64)[:3, :3]
+    u = e / np.maximum(np.linalg.norm(e, axis=1, keepdims=True), 1e-30)
+    da, db = np.cross(na, u), np.cross(nb, u)
+    la, lb = np.linalg.norm(da, axis=1), np.linalg.norm(db, axis=1)
+    ok = (la > 1e-6) & (lb > 1e-6)
+    out = np.full(len(e), np.linalg.norm(lin @ np.full(3, 1.0 / np.sqrt(3.0))))
+    sa = np.linalg.norm(da[ok] @ lin.T, axis=1) / la[ok]
+    sb = np.linalg.norm(db[ok] @ lin.T, axis=1) / lb[ok]
+    out[ok] = 0.5 * (sa + sb)
+    return out
+
+
 def visible_edges(edges, matrix, camera, K):
     """Boolean per edge: the edge shader would draw it (same tests as edge_highlight.vert)."""
     m = np.asarray(matrix, np.float64)
@@ -313,8 +328,7 @@ def visible_edges(edges, matrix, camera, K):
         outside |= (c0[:, axis] > c0[:, 3]) & (c1[:, axis] > c1[:, 3])
         outside |= (c0[:, axis] < -c0[:, 3]) & (c1[:, axis] < -c1[:, 3])
     dist = np.linalg.norm(to_eye, axis=1) if not camera.orthographic else 1.0
-    # The radius's scale as the shaders take it (lighting.glsl, el_radius_scale: |M (1,1,1)/sqrt 3|).
-    scale = np.linalg.norm(m[:3, :3] @ np.full(3, 1.0 / np.sqrt(3.0)))
+    scale = radius_scale(m, edges.n1, edges.n2, edges.p1 - edges.p0)
     n1u = n1 / np.maximum(np.linalg.norm(n1, axis=1, keepdims=True), 1e-30)
     n2u = n2 / np.maximum(np.linalg.norm(n2, axis=1, keepdims=True), 1e-30)
     width_px = edges.radius * scale * np.linalg.norm(n1u - n2u, axis=1) * camera.px_per_unit / dist

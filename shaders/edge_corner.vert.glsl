@@ -12,7 +12,7 @@ void main()
   corner_n3 = el_transform_normal(model, m3);
   corner_faces_a = faces_a;
   corner_faces_b = faces_b;
-  float r = corner.z * el_radius_scale(model);
+  float r = corner.z * el_ball_scale(model, m1, m2, m3);
   corner_radius = r;
   corner_fold = corner.w;
   /* The ball's centre in world space, r under each face's plane (over it where the corner is

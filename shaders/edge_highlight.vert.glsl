@@ -89,7 +89,7 @@ void main()
   el_mean_and_turn(el_transform_normal(model, n2 - 0.5 * turn2), el_transform_normal(model, n2 + 0.5 * turn2),
                    edge_n2, edge_turn2);
   edge_dir = w1 - w0;
-  edge_radius = corner.z * el_radius_scale(model);
+  edge_radius = corner.z * el_radius_scale(model, n1, n2, p1 - p0);
   /* Convex or concave, in object space where a mirroring model cannot turn it: N1's face runs
    * p0 -> p1, so the surface turns away from its outside where N1 x N2 points along p0 -> p1
    * (the library's EL_EDGE_CONVEX rule, classify.cpp). */

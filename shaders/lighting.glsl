@@ -48,11 +48,31 @@ vec3 el_blinn_phong(int i, vec3 X, vec3 N, vec3 V, vec3 albedo, vec3 spec, float
   return E * (albedo * (nl / 3.14159265) + spec * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
 }
 
-/* How a radius in the object's units scales into world units under m: its linear part's effect
- * on the unit diagonal (viewport.py culls with the same measure). */
-float el_radius_scale(mat4 m)
+/* How an edge's radius in the object's units scales into world units under m (the Bevel
+ * modifier's Amount is in object space too). The fillet's cross-section, square to the edge e,
+ * meets each face along n x e (object space normals), which m stretches by |m (n x e)|; the band
+ * is a circle, so it takes the mean of its two faces' stretches: under a non-uniform scale a
+ * box's edges along the long axis keep their radius, as the modifier's do. Under a uniform scale
+ * s it is s. viewport.py culls with the same measure. */
+float el_radius_scale(mat4 m, vec3 na, vec3 nb, vec3 e)
 {
-  return length(mat3(m) * normalize(vec3(1.0)));
+  mat3 l = mat3(m);
+  vec3 u = e / max(length(e), 1e-30);
+  vec3 da = cross(na, u), db = cross(nb, u);
+  float la = length(da), lb = length(db);
+  if (!(la > 1e-6) || !(lb > 1e-6)) {
+    return length(l * normalize(vec3(1.0))); /* no direction across the edge: the diagonal's */
+  }
+  return 0.5 * (length(l * da) / la + length(l * db) / lb);
+}
+
+/* A corner patch's ball, where three fillets of faces m1, m2, m3 meet: the mean of its three
+ * edges' scales (el_radius_scale), so that it meets their bands. */
+float el_ball_scale(mat4 m, vec3 m1, vec3 m2, vec3 m3)
+{
+  return (el_radius_scale(m, m1, m2, cross(m1, m2)) + el_radius_scale(m, m2, m3, cross(m2, m3)) +
+          el_radius_scale(m, m3, m1, cross(m3, m1))) /
+         3.0;
 }
 
 /* The cofactor matrix of m's linear part, signed by its determinant: a normal transformed by it

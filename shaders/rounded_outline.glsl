@@ -34,7 +34,6 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
   }
   bool persp = frame.eye.w > 0.5;
   mat3 nm = el_normal_matrix(model);
-  float scale = el_radius_scale(model); /* as the edge pass scales its radius */
   vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy;
   vec4 list = texelFetch(outline_triangles, ivec2((tri % EL_OUTLINE_TRIANGLES_PER_ROW) * EL_OUTLINE_TRIANGLE_TEXELS, tri / EL_OUTLINE_TRIANGLES_PER_ROW), 0);
   for (int k = 0; k < 4; k++) {
@@ -44,10 +43,11 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
     }
     ivec2 at = ivec2((e % EL_OUTLINE_EDGES_PER_ROW) * EL_OUTLINE_EDGE_TEXELS, e / EL_OUTLINE_EDGES_PER_ROW);
     vec4 t0 = texelFetch(outline_edges, at, 0);
-    vec3 na = normalize(nm * t0.xyz);
-    vec3 nb = normalize(nm * texelFetch(outline_edges, at + ivec2(1, 0), 0).xyz);
-    vec3 w0 = (model * vec4(texelFetch(outline_edges, at + ivec2(2, 0), 0).xyz, 1.0)).xyz;
-    vec3 w1 = (model * vec4(texelFetch(outline_edges, at + ivec2(3, 0), 0).xyz, 1.0)).xyz;
+    vec3 ma = t0.xyz, mb = texelFetch(outline_edges, at + ivec2(1, 0), 0).xyz;
+    vec3 o0 = texelFetch(outline_edges, at + ivec2(2, 0), 0).xyz, o1 = texelFetch(outline_edges, at + ivec2(3, 0), 0).xyz;
+    float scale = el_radius_scale(model, ma, mb, o1 - o0); /* as the edge pass scales its radius */
+    vec3 na = normalize(nm * ma), nb = normalize(nm * mb);
+    vec3 w0 = (model * vec4(o0, 1.0)).xyz, w1 = (model * vec4(o1, 1.0)).xyz;
     vec3 C = (na + nb) / max(1.0 + dot(na, nb), 1e-3);
     vec3 E = cross(na, nb);
     vec2 width = vec2(0.0);
@@ -99,7 +99,6 @@ vec4 el_outline_corners(int tri, vec4 clip, out vec4 zone0, out vec4 zone1, out 
   }
   vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy;
   vec4 list = texelFetch(outline_triangles, ivec2((tri % EL_OUTLINE_TRIANGLES_PER_ROW) * EL_OUTLINE_TRIANGLE_TEXELS + 1, tri / EL_OUTLINE_TRIANGLES_PER_ROW), 0);
-  float scale = el_radius_scale(model);
   mat3 nm = el_normal_matrix(model);
   bool persp = frame.eye.w > 0.5;
   for (int q = 0; q < 4; q++) {
@@ -109,10 +108,12 @@ vec4 el_outline_corners(int tri, vec4 clip, out vec4 zone0, out vec4 zone1, out 
     }
     ivec2 at = ivec2((c % EL_OUTLINE_CORNERS_PER_ROW) * EL_OUTLINE_CORNER_TEXELS, c / EL_OUTLINE_CORNERS_PER_ROW);
     vec3 vert = (model * vec4(texelFetch(outline_corners, at + ivec2(1, 0), 0).xyz, 1.0)).xyz;
-    vec3 n[3];
+    vec3 n[3], m[3];
     for (int k = 0; k < 3; k++) {
-      n[k] = normalize(nm * texelFetch(outline_corners, at + ivec2(2 + k, 0), 0).xyz);
+      m[k] = texelFetch(outline_corners, at + ivec2(2 + k, 0), 0).xyz;
+      n[k] = normalize(nm * m[k]);
     }
+    float scale = el_ball_scale(model, m[0], m[1], m[2]); /* as the corner pass scales its radius */
     vec3 V = normalize(persp ? frame.eye.xyz - vert : -frame.view_dir.xyz);
     /* Edge A lies between sectors CA and AB, B between AB and BC, C between BC and CA. */
     bvec3 sil;
