@@ -6,9 +6,10 @@ the nearest of those whose strip reaches into its patch (a quad's other half at 
 the thin facets of a triangulated face along it). No bpy: plain-Python tests import it."""
 import numpy as np
 
-# Per edge: (N1, radius), (N2, 0), (p0, 0), (p1, 0), object space, the normals as the edge pass
-# shades with (edge_choice.EdgeSet).
-EDGE_TEXELS = 4
+# Per edge: (N1, radius), (N2, 0), (p0, 0), (p1, 0), (turn of N1, 0), (turn of N2, 0), object
+# space, the normals as the edge pass shades with (edge_choice.EdgeSet: at t along the edge a
+# side's normal is normalize(N + (t - 1/2) turn)).
+EDGE_TEXELS = 6
 EDGES_PER_ROW = 1024
 # Per corner patch (three convex rounded edges meeting): (ball centre, radius), (vertex, 0), and
 # its three sectors' normals (AB, BC, CA; corner_patches.Corners).
@@ -46,6 +47,8 @@ def _edges(extract):
         r = np.zeros((len(keep), EDGE_TEXELS, 4), np.float32)
         r[:, 0, :3], r[:, 0, 3] = e.n1[keep], e.radius[keep]
         r[:, 1, :3], r[:, 2, :3], r[:, 3, :3] = e.n2[keep], e.p0[keep], e.p1[keep]
+        if e.turn is not None:
+            r[:, 4, :3], r[:, 5, :3] = e.turn[keep, :3], e.turn[keep, 3:]
         recs.append(r)
         faces.append(np.asarray(e.faces[keep], np.int64) - 1)
         verts.append(np.asarray(e.verts, np.int64)[keep] if e.verts is not None else np.full((len(keep), 2), -1))

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import compat, native, radius_clamp, render_cache
+from . import closed_surfaces, compat, native, radius_clamp, render_cache
 from .edge_choice import choice_key, choose_edges, same_edges
 from .edge_data import EdgeData, first_two_faces
 from .lines import static_lines
@@ -35,6 +35,9 @@ class MeshExtract:
     views: dict = field(default_factory=dict)   # instance index -> native.View
     _face_normals: object = None
     smooth_faces: np.ndarray = None             # per triangle: shaded smooth (a corner normal not the face's)
+    flips: np.ndarray = None                    # per triangle: the library reversed its winding (closed_surfaces)
+    closed: bool = False                        # closed and consistently oriented: back faces hide (closed_surfaces)
+    box: np.ndarray = None                      # (2, 3) object-space bounds of its surface
 
     def notes(self):
         """Report lines about this geometry: what was drawn differently from the file and why."""
@@ -178,6 +181,9 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     # Smooth contours exist only where the surface is shaded smooth: a flat face has one normal.
     nor = out.corner_nor.reshape(-1, 3, 3)
     out.smooth_faces = np.any(np.einsum("tck,tk->tc", nor, tri_normals) < 1.0 - 1e-5, axis=1)
+    out.flips = m.triangle_flips().astype(bool)
+    out.closed = closed_surfaces.is_closed(tri_verts, out.flips)
+    out.box = closed_surfaces.bounds(positions)  # loose vertices too: a larger box culls less, never wrongly
     out.edge_data = EdgeData(m.edge_flags(), m.edge_angles(), m.edge_normals(), edges, positions,
                              *first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id, polygons,
                              tri_verts=tri_verts, corner_nor=nor)

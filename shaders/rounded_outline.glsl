@@ -10,14 +10,15 @@
  * (EL_OUTLINE_*: rounded_outline.py's constants, passes/surface_pass.py). */
 #ifdef EL_ROUNDED_OUTLINE
 /* For each of triangle `tri`'s listed edges, at this vertex (clip position `clip`): `dist`, its
- * signed distance in pixels from the edge's image line, `along`, where its foot lies on the
- * edge's image (0 and 1: the ends; both affine on screen, so interpolated without perspective
- * they are exact at every pixel), the strip's width in pixels at the edge's two ends
- * (returned: at p0, `strip1`: at p1; 0 where the edge is no silhouette there), which a pixel
- * takes at its foot, and the edge's image length in pixels (`length_px`, the same at all three
- * vertices). Past an end the strip ends in a half disc of its width there: where the outline
- * turns away from the part's inside between two strips (a rim seen from above), their ends
- * leave a wedge that the moved outline, round there as the fillets' is, still passes inside.
+ * signed distance in pixels from the edge's image line (positive on its faces' side), `along`,
+ * where its foot lies on the edge's image (0 and 1: the ends; both affine on screen, so
+ * interpolated without perspective they are exact at every pixel), the strip's width in pixels
+ * at the edge's two ends (returned: at p0, `strip1`: at p1; 0 where the edge is no silhouette
+ * there), which a pixel takes at its foot, and the edge's image length in pixels (`length_px`,
+ * the same at all three vertices). Past an end the strip ends in a half disc of its width
+ * there: where the outline turns away from the part's inside between two strips (a rim seen
+ * from above), their ends leave a wedge that the moved outline, round there as the fillets' is,
+ * still passes inside.
  * Judged at the edge's own ends, the strip is the same on both its faces and the triangle's
  * three vertices agree on it. A polygon's other triangles meet the line beyond the edge too (a
  * gear's face round its teeth): the strip runs along the edge alone, and its ends' half discs
@@ -48,15 +49,21 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
     float scale = el_radius_scale(model, ma, mb, o1 - o0); /* as the edge pass scales its radius */
     vec3 na = normalize(nm * ma), nb = normalize(nm * mb);
     vec3 w0 = (model * vec4(o0, 1.0)).xyz, w1 = (model * vec4(o1, 1.0)).xyz;
-    vec3 C = (na + nb) / max(1.0 + dot(na, nb), 1e-3);
-    vec3 E = cross(na, nb);
+    vec3 ta = texelFetch(outline_edges, at + ivec2(4, 0), 0).xyz, tb = texelFetch(outline_edges, at + ivec2(5, 0), 0).xyz;
     vec2 width = vec2(0.0);
     for (int end = 0; end < 2; end++) {
+      /* Each end with the normals its faces are shaded with there, the vertex's own: the edges
+       * that meet at a vertex agree on whether it lies on a silhouette, so a strip narrows to
+       * nothing where its neighbour's does, and its end's half disc reaches no farther. */
+      float half_turn = end == 0 ? -0.5 : 0.5;
+      vec3 ea = normalize(nm * (ma + half_turn * ta)), eb = normalize(nm * (mb + half_turn * tb));
+      vec3 C = (ea + eb) / max(1.0 + dot(ea, eb), 1e-3);
+      vec3 E = cross(ea, eb);
       vec3 to_eye = persp ? frame.eye.xyz - (end == 0 ? w0 : w1) : -frame.view_dir.xyz;
       vec3 V = normalize(to_eye);
       vec3 P = cross(E, V);
       float len = length(P);
-      if (dot(na, V) * dot(nb, V) < 0.0 && len > 1e-6) {
+      if (dot(ea, V) * dot(eb, V) < 0.0 && len > 1e-6) {
         float px_per_world = frame.camera.x / (persp ? max(length(to_eye), 1e-30) : 1.0);
         width[end] = t0.w * scale * max(abs(dot(P / len, C)) - 1.0, 0.0) * px_per_world;
       }
@@ -72,7 +79,17 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
     if (!(c0.w > 0.0) || !(c1.w > 0.0) || !(l > 1e-6)) {
       continue; /* behind the eye, or seen end-on: its strip is a point */
     }
-    dist[k] = (along.x * (s.y - s0.y) - along.y * (s.x - s0.x)) / l;
+    /* Signed towards where the faces lie: at a silhouette both lie on one side of the line, and
+     * the strip lies there; on the other side, another face may show (a bore's wall turning
+     * towards the eye past the end of its rim's silhouette). Judged at the wider end, from a
+     * step into face a square to the edge. */
+    vec3 wide_end = width.x >= width.y ? w0 : w1;
+    vec3 into_a = -(nb - dot(nb, na) * na);
+    vec4 cs = frame.projection * (frame.view * vec4(wide_end, 1.0));
+    vec4 ca = frame.projection * (frame.view * vec4(wide_end + into_a * (0.1 * length(w1 - w0) / max(length(into_a), 1e-30)), 1.0));
+    vec2 step_a = (ca.xy / ca.w - cs.xy / cs.w) * 0.5 * frame.viewport.xy;
+    float faces_side = along.x * step_a.y - along.y * step_a.x < 0.0 ? -1.0 : 1.0;
+    dist[k] = faces_side * (along.x * (s.y - s0.y) - along.y * (s.x - s0.x)) / l;
     along_t[k] = dot(s - s0, along) / (l * l);
     length_px[k] = l;
     strip0[k] = width.x;

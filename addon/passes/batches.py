@@ -20,11 +20,19 @@ def _vertbuf(attrs):
 
 def surface_buffers(extract):
     """slot -> its triangles' vertex buffer, three vertices per triangle in order: a triangle's
-    number is gl_VertexID / 3 however its vertices are drawn (shaders/surface.vert.glsl)."""
+    number is gl_VertexID / 3 however its vertices are drawn (shaders/surface.vert.glsl). Each
+    triangle is wound as the library oriented it (outwards on a closed surface), so that
+    culling back faces leaves a closed surface's outside (closed_surfaces.py); a triangle wound
+    the other way round takes its corner normals negated, which keeps it shaded as it is seen
+    (surface.frag's front and back)."""
     out = {}
+    flips = extract.flips if extract.flips is not None else np.zeros(len(extract.corner_pos) // 3, bool)
     for slot, tris in extract.slot_triangles.items():
-        corners = (tris[:, None] * 3 + np.arange(3)).reshape(-1)
-        out[slot] = _vertbuf({"pos": extract.corner_pos[corners], "nor": extract.corner_nor[corners]})
+        flipped = flips[tris]
+        order = np.where(flipped[:, None], np.array([0, 2, 1]), np.arange(3))
+        corners = (tris[:, None] * 3 + order).reshape(-1)
+        sign = np.where(np.repeat(flipped, 3), -1.0, 1.0).astype(np.float32)[:, None]
+        out[slot] = _vertbuf({"pos": extract.corner_pos[corners], "nor": extract.corner_nor[corners] * sign})
     return out
 
 

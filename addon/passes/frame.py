@@ -62,7 +62,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         # it alone, and for the Object Index pass.
         surface_pass.draw_surface(targets, scene, gpu_meshes, ubo, whiteout, ids=s == 0 and (
             settings.ids or settings.lines is not None or (settings.highlights and not whiteout)),
-            rounded=settings.highlights and not whiteout)
+            rounded=settings.highlights and not whiteout, camera=camera)
         if s == 0 and first_sample:
             first_sample()
         # The edge and line passes run once, on the unjittered first sample: their coverage is

@@ -1,6 +1,9 @@
 """Surface pass: each material slot's triangles, shaded (Blinn-Phong, toon ramp, X-Toon or
 whiteout), into the surface targets; with ids, which instance and face covers each pixel."""
-from .. import rounded_outline
+import gpu
+import numpy as np
+
+from .. import closed_surfaces, rounded_outline
 from . import frame_data, pass_state, shader_lib, shader_specs, toon
 from .targets import surface_outputs
 
@@ -39,17 +42,32 @@ def slot_first_ids(extract):
     return out
 
 
-def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False):
+def _culling(inst, clip_matrix):
+    """What to cull of the instance: 'NONE', or its back faces where they cannot show (a closed
+    surface wholly in front of the near plane: closed_surfaces.py), which are the faces wound
+    clockwise on screen, or counter-clockwise where its transform mirrors it (surface.frag's
+    front and back take the mirror into account the same way)."""
+    m = inst.mesh
+    if clip_matrix is None or not m.closed or m.box is None or not closed_surfaces.hidden_back_faces(
+            m.box, inst.matrix, clip_matrix):
+        return 'NONE'
+    return 'FRONT' if np.linalg.det(np.asarray(inst.matrix, np.float64)[:3, :3]) < 0.0 else 'BACK'
+
+
+def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False, camera=None):
     """One program per shading mode in use (EL_SURFACE_MODE is fixed when it is built: a uniform
     branch would make every fragment pay for every mode on llvmpipe). With `ids`, the variant
     that also writes which instance and face covers each pixel (the line pass's visibility,
     docs/lines.md). With `rounded` (the edge pass draws the bands), the triangles a rounded
     convex edge's strip or a corner's zone may cross leave out the strip between a sharp
     silhouette and its fillet's outline (rounded_outline.glsl), in their own variant and batch
-    (batches.GpuMesh.outline)."""
+    (batches.GpuMesh.outline). With `camera`, a closed surface's back faces are culled where
+    they cannot show (closed_surfaces.py): the strips would show its inside."""
     draws, firsts = {}, {}
+    clip_matrix = np.asarray(camera.projection, np.float64) @ np.asarray(camera.view, np.float64) if camera else None
     for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
+        cull = _culling(inst, clip_matrix)
         if ids and id(gm.extract) not in firsts:  # once per geometry, not per instance
             firsts[id(gm.extract)] = slot_first_ids(gm.extract)
         first = firsts.get(id(gm.extract), {})
@@ -59,12 +77,12 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
             ids_of = (float(index + 1), float(first.get(slot, 0)))
             outline = gm.outline.get(slot) if rounded else None
             if outline is None:
-                draws.setdefault((mode, False), []).append((inst.matrix, s, batch, ids_of, None))
+                draws.setdefault((mode, False), []).append((inst.matrix, s, batch, ids_of, None, cull))
                 continue
             textures, listed, rest = outline
             if rest is not None:
-                draws.setdefault((mode, False), []).append((inst.matrix, s, rest, ids_of, None))
-            draws.setdefault((mode, True), []).append((inst.matrix, s, listed, ids_of, textures))
+                draws.setdefault((mode, False), []).append((inst.matrix, s, rest, ids_of, None, cull))
+            draws.setdefault((mode, True), []).append((inst.matrix, s, listed, ids_of, textures, cull))
     outputs = surface_outputs(targets, ids)
     with pass_state.drawing("surface", targets.surface_ids_fb if ids else targets.surface_fb):
         for (mode, outline), items in sorted(draws.items()):
@@ -74,7 +92,8 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
             shader = shader_lib.get("surface", defines)
             shader.bind()
             shader.uniform_block("frame", ubo)
-            for matrix, s, batch, surface_ids, sides in items:
+            for matrix, s, batch, surface_ids, sides, cull in items:
+                gpu.state.face_culling_set(cull)
                 shader_lib.set_uniform(shader, "model", frame_data.mat4(matrix))
                 shader_lib.set_uniform(shader, "surface_ids", surface_ids)
                 shading_uniforms(shader, s)
@@ -84,3 +103,4 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
                     shader_lib.set_sampler(shader, "outline_corners", sides[1])
                     shader_lib.set_sampler(shader, "outline_triangles", sides[2])
                 batch.draw(shader)
+        gpu.state.face_culling_set('NONE')
