@@ -51,6 +51,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
     # Between samples too, a cancel check first waits for the queued draws: the loop queues
     # samples far faster than llvmpipe draws them, and a cancel would land after all of them.
     between = CancelCheck(targets.result, cancelled) if cancelled else None
+    culls = surface_pass.cull_modes(scene, camera)
     for s in range(samples):
         if cancelled and (cancelled() if s == 0 else between()):
             break
@@ -62,7 +63,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         # it alone, and for the Object Index pass.
         surface_pass.draw_surface(targets, scene, gpu_meshes, ubo, whiteout, ids=s == 0 and (
             settings.ids or settings.lines is not None or (settings.highlights and not whiteout)),
-            rounded=settings.highlights and not whiteout, camera=camera)
+            rounded=settings.highlights and not whiteout, culls=culls)
         if s == 0 and first_sample:
             first_sample()
         # The edge and line passes run once, on the unjittered first sample: their coverage is

@@ -42,32 +42,37 @@ def slot_first_ids(extract):
     return out
 
 
-def _culling(inst, clip_matrix):
-    """What to cull of the instance: 'NONE', or its back faces where they cannot show (a closed
-    surface wholly in front of the near plane: closed_surfaces.py), which are the faces wound
-    clockwise on screen, or counter-clockwise where its transform mirrors it (surface.frag's
-    front and back take the mirror into account the same way)."""
-    m = inst.mesh
-    if clip_matrix is None or not m.closed or m.box is None or not closed_surfaces.hidden_back_faces(
-            m.box, inst.matrix, clip_matrix):
-        return 'NONE'
-    return 'FRONT' if np.linalg.det(np.asarray(inst.matrix, np.float64)[:3, :3]) < 0.0 else 'BACK'
+def cull_modes(scene, camera):
+    """Per instance, what its surface culls, once per frame (the samples share the camera):
+    'NONE', or its back faces where they cannot show (a closed surface wholly in front of the
+    near plane: closed_surfaces.py), which are the faces wound clockwise on screen, or
+    counter-clockwise where its transform mirrors it (surface.frag's front and back take the
+    mirror into account the same way)."""
+    clip_matrix = np.asarray(camera.projection, np.float64) @ np.asarray(camera.view, np.float64)
+    out = []
+    for inst in scene.instances:
+        m = inst.mesh
+        if not m.closed or m.box is None or not closed_surfaces.hidden_back_faces(m.box, inst.matrix, clip_matrix):
+            out.append('NONE')
+        else:
+            out.append('FRONT' if np.linalg.det(np.asarray(inst.matrix, np.float64)[:3, :3]) < 0.0 else 'BACK')
+    return out
 
 
-def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False, camera=None):
+def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False, culls=None):
     """One program per shading mode in use (EL_SURFACE_MODE is fixed when it is built: a uniform
     branch would make every fragment pay for every mode on llvmpipe). With `ids`, the variant
     that also writes which instance and face covers each pixel (the line pass's visibility,
     docs/lines.md). With `rounded` (the edge pass draws the bands), the triangles a rounded
     convex edge's strip or a corner's zone may cross leave out the strip between a sharp
     silhouette and its fillet's outline (rounded_outline.glsl), in their own variant and batch
-    (batches.GpuMesh.outline). With `camera`, a closed surface's back faces are culled where
-    they cannot show (closed_surfaces.py): the strips would show its inside."""
+    (batches.GpuMesh.outline). `culls` (cull_modes), per instance: a closed surface's back
+    faces culled where they cannot show (closed_surfaces.py), since the strips would show its
+    inside."""
     draws, firsts = {}, {}
-    clip_matrix = np.asarray(camera.projection, np.float64) @ np.asarray(camera.view, np.float64) if camera else None
     for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
-        cull = _culling(inst, clip_matrix)
+        cull = culls[index] if culls else 'NONE'
         if ids and id(gm.extract) not in firsts:  # once per geometry, not per instance
             firsts[id(gm.extract)] = slot_first_ids(gm.extract)
         first = firsts.get(id(gm.extract), {})
