@@ -16,9 +16,9 @@
  * at the edge's two ends (returned: at p0, `strip1`: at p1; 0 where the edge is no silhouette
  * there), which a pixel takes at its foot, and the edge's image length in pixels (`length_px`,
  * the same at all three vertices). Past an end the strip ends in a half disc of its width
- * there: where the outline turns away from the part's inside between two strips (a rim seen
- * from above), their ends leave a wedge that the moved outline, round there as the fillets' is,
- * still passes inside.
+ * there, or of the edge's image length where that is shorter (surface.frag): where the outline
+ * turns away from the part's inside between two strips (a rim seen from above), their ends
+ * leave a wedge that the moved outline, round there as the fillets' is, still passes inside.
  * Judged at the edge's own ends, the strip is the same on both its faces and the triangle's
  * three vertices agree on it. A polygon's other triangles meet the line beyond the edge too (a
  * gear's face round its teeth): the strip runs along the edge alone, and its ends' half discs

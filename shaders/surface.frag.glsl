@@ -14,7 +14,11 @@ void main()
   for (int k = 0; k < 4; k++) {
     float strip = mix(outline_strip0[k], outline_strip1[k], clamp(outline_along[k], 0.0, 1.0));
     float past = max(max(-outline_along[k], outline_along[k] - 1.0), 0.0) * outline_length[k]; /* past its end */
-    if (strip > 0.0 && outline_dist[k] >= 0.0 && outline_dist[k] * outline_dist[k] + past * past < strip * strip) {
+    /* Past its end a half disc, of no more than the edge's image length: where a rim's image
+     * turns tightly its edges are shorter than the strip is wide, and a wider disc reaches past
+     * the next edges, whose strips narrow. */
+    float reach = past > 0.0 ? min(strip, outline_length[k]) : strip;
+    if (strip > 0.0 && outline_dist[k] >= 0.0 && outline_dist[k] * outline_dist[k] + past * past < reach * reach) {
       discard;
     }
   }
