@@ -84,3 +84,25 @@ def visible(c, z, faces, instance_id, outline, depth, ids, px_per_unit, perspect
     with np.errstate(divide="ignore"):
         behind_ok = z <= np.float32(1.0) / np.where(inv_shown > 0.0, inv_shown, np.float32(1.0)) + bias
     return own | (inv_shown <= 0.0) | behind_ok
+
+
+def past_outline(c, faces, instance_id, outline, depth, ids):
+    """Which centre points of lines are past the part's outline and not drawn at all (line.frag,
+    the same rule): of a type that lies between faces (not OUTLINE_TYPES), over empty space, with
+    none of the segment's faces in the 3x3 pixels around. Arguments as for visible()."""
+    h, w = depth.shape
+    c = np.asarray(c, np.float32)
+    faces = np.asarray(faces, np.float32)
+    n = len(c)
+    inst = np.broadcast_to(np.asarray(instance_id, np.float32), (n,))
+    outline = np.broadcast_to(np.asarray(outline, bool), (n,))
+    q = np.floor(c).astype(np.int64)
+    empty = depth[np.clip(q[:, 1], 0, h - 1), np.clip(q[:, 0], 0, w - 1)] <= 0.0
+    own = np.zeros(n, bool)
+    for dy in (-1, 0, 1):
+        y = np.clip(q[:, 1] + dy, 0, h - 1)
+        for dx in (-1, 0, 1):
+            x = np.clip(q[:, 0] + dx, 0, w - 1)
+            fid = ids[y, x, 1]
+            own |= (ids[y, x, 0] == inst) & (fid > 0.0) & ((fid == faces[:, 0]) | (fid == faces[:, 1]))
+    return ~outline & empty & ~own

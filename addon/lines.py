@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import native
+from . import native, outline_lines
 
 # Draw order; where two types share an edge the first drawn wins a tie (line_pass.py).
 TYPES = ("silhouette", "border", "crease", "contour", "material", "marked")
@@ -172,9 +172,11 @@ def static_lines(edge_data, mesh, settings):
     return out
 
 
-def view_lines(extract, index, matrix, camera, settings, counters=None):
+def view_lines(extract, index, matrix, camera, settings, counters=None, rounded=False):
     """Silhouettes and smooth contours of instance `index` of `extract` seen from `camera`:
-    type -> LineSegments. One native view update per instance; chains only where tapered."""
+    type -> LineSegments. One native view update per instance; chains only where tapered. With
+    `rounded` (the edge pass draws the bands, and the surface pass the fillets' outline), a
+    silhouette along a convex rounded edge lies on its fillet's outline (outline_lines.py)."""
     kinds = [k for k in settings.types if k in VIEW_TYPES] if settings else []
     if not kinds:
         return {}
@@ -195,7 +197,11 @@ def view_lines(extract, index, matrix, camera, settings, counters=None):
         edges = views.silhouettes()
         selected = np.zeros(len(d.flags), bool)
         selected[edges] = True
-        out["silhouette"] = _edge_segments(d, extract.native, selected, settings.style("silhouette").taper > 0.0)
+        seg = _edge_segments(d, extract.native, selected, settings.style("silhouette").taper > 0.0)
+        if rounded and extract.edges:
+            seg.p0, seg.p1 = outline_lines.on_rounded_outline(extract, d.edges[np.flatnonzero(selected)], seg.p0,
+                                                              seg.p1, matrix, camera)
+        out["silhouette"] = seg
     if "contour" in kinds:
         pts, tris = views.contours()
         # Not across flat-shaded faces: their shading has no contour (the library interpolates

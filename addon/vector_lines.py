@@ -97,7 +97,10 @@ def sample_runs(seg, matrix, instance_id, kind, style, camera, depth, ids):
     vis = line_visibility.visible(c, z, faces[s], instance_id, kind in line_visibility.OUTLINE_TYPES,
                                   depth, ids, camera.px_per_unit, not camera.orthographic)
     width = np.round(2.0 * (ra[s] + t * (rb[s] - ra[s])) / WIDTH_STEP_PX) * WIDTH_STEP_PX
-    clipped = line_visibility.clipped(z, camera.projection)
+    # Outside the camera's clip range a line is not drawn at all, nor is a crease past the
+    # part's rounded outline (line_visibility.past_outline).
+    clipped = line_visibility.clipped(z, camera.projection) | line_visibility.past_outline(
+        c, faces[s], instance_id, kind in line_visibility.OUTLINE_TYPES, depth, ids)
     # A run starts where the segment, the visibility, the width or the clipping changes.
     start = np.ones(len(s), bool)
     start[1:] = ((s[1:] != s[:-1]) | (vis[1:] != vis[:-1]) | (width[1:] != width[:-1])

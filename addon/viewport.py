@@ -18,6 +18,7 @@ from .materials import shading_of
 from .passes import batches, frame, frame_data, line_pass, toon, view_lines
 from .passes.camera import Camera
 from .passes.targets import Targets
+from .radius_scale import radius_scale
 
 # Below one 8-bit step an edge cannot change a pixel.
 MIN_WEIGHT = 1.0 / 255.0
@@ -203,7 +204,7 @@ class ViewportState:
             scene = scene_sync.SceneData(self.instances, self.lights, self.ambient, self.reports)
             s = frame.Settings(samples=settings.viewport_samples, highlights=settings.highlights,
                                transparent=depsgraph.scene.render.film_transparent, lines=self.line_settings)
-            self._update_view_lines(scene, camera, key)
+            self._update_view_lines(scene, camera, key, settings.highlights)
             stats = frame.draw(scene, camera, s, self.targets, gpu_meshes, view_batches=self.view_batches)
             self.counters.lines_drawn = stats.lines_drawn
             self.counters.passes += 1
@@ -213,22 +214,26 @@ class ViewportState:
         summary = self.summary(debug=depsgraph.scene.edgelight.show_debug_stats)
         engine.update_stats("EdgeLight", summary + (f" | {self.reports[-1]}" if self.reports else ""))
 
-    def _update_view_lines(self, scene, camera, view_key):
+    def _update_view_lines(self, scene, camera, view_key, highlights):
         """Silhouettes and contours for this view: native view calls and new batches only when
-        the view, an instance or the view-dependent line settings changed."""
+        the view, an instance or the view-dependent line settings changed (with the highlights
+        on, silhouettes of rounded edges lie on the fillets' outline: lines.view_lines)."""
         ls = self.line_settings
+        rounded = bool(highlights) and not (ls is not None and ls.whiteout)
         view_styles = tuple((t, st.taper > 0.0) for t, st in ls.styles if t in lines.VIEW_TYPES) if ls else ()
         # Per instance its geometry (the native mesh: a material change copies the extract but
-        # keeps it) and its transform.
-        key = (view_key, view_styles,
-               tuple((id(i.mesh.native), i.matrix.tobytes()) for i in self.instances)) if view_styles else None
+        # keeps it; with rounded silhouettes the extract too, whose radii they follow) and its
+        # transform.
+        key = (view_key, view_styles, rounded,
+               tuple((id(i.mesh.native), id(i.mesh) if rounded else 0, i.matrix.tobytes())
+                     for i in self.instances)) if view_styles else None
         if key == self.view_lines_key:
             return
         self.view_lines_key = key
         if key is None:
             self.view_batches = []
             return
-        segments = view_lines.view_line_segments(scene, camera, ls, self.counters)
+        segments = view_lines.view_line_segments(scene, camera, ls, self.counters, rounded)
         self.view_batches = [line_pass.line_batches(segs) for segs in segments]
         self.counters.view_uploads += sum(len(b) for b in self.view_batches)
 
@@ -289,21 +294,6 @@ def viewport_camera(rv3d, width, height):
     return Camera(view=view, projection=np.array(rv3d.window_matrix, dtype=np.float64),
                         eye=tuple(world[:3, 3]), view_dir=tuple(forward),
                         orthographic=not rv3d.is_perspective, width=width, height=height)
-
-
-def radius_scale(m, na, nb, e):
-    """Per edge, how its radius scales into world units under m (lighting.glsl, el_radius_scale:
-    the mean stretch of its two faces' directions square to it, object space)."""
-    lin = np.asarray(m, np.float64)[:3, :3]
-    u = e / np.maximum(np.linalg.norm(e, axis=1, keepdims=True), 1e-30)
-    da, db = np.cross(na, u), np.cross(nb, u)
-    la, lb = np.linalg.norm(da, axis=1), np.linalg.norm(db, axis=1)
-    ok = (la > 1e-6) & (lb > 1e-6)
-    out = np.full(len(e), np.linalg.norm(lin @ np.full(3, 1.0 / np.sqrt(3.0))))
-    sa = np.linalg.norm(da[ok] @ lin.T, axis=1) / la[ok]
-    sb = np.linalg.norm(db[ok] @ lin.T, axis=1) / lb[ok]
-    out[ok] = 0.5 * (sa + sb)
-    return out
 
 
 def visible_edges(edges, matrix, camera, K):

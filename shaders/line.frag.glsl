@@ -113,6 +113,14 @@ void main()
     /* Empty space beyond: an outline against the background, whatever the centre face's plane
      * says (near a convex outline, a facet's plane continued lies in front of the outline). */
     under = under && inv_other > 0.0;
+    /* A line of a type that lies between faces (a crease, not an outline) over empty space with
+     * none of its faces within a pixel lies past the part's outline: where a rounded silhouette
+     * moved that outline in (rounded_outline.glsl), its silhouette line moved with it
+     * (outline_lines.py), and a crease along it would trace the sharp edge beside the part. It
+     * is not hidden there but gone, dimmed hidden lines too. */
+    if (line_vis.w < 0.5 && !own && !(inv_c > 0.0)) {
+      discard;
+    }
   }
   float inv_shown = line_vis.w > 0.5 && !under ? inv_other : inv_c;
   bool visible = own || inv_shown <= 0.0 || z <= 1.0 / inv_shown + bias;

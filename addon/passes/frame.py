@@ -150,7 +150,9 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None, pa
     for inst in scene.instances:
         if id(inst.mesh) not in gpu_meshes:
             gpu_meshes[id(inst.mesh)] = batches.GpuMesh(inst.mesh, LINE_CHUNK)
-    view_segments = view_lines.view_line_segments(scene, camera, settings.lines)
+    whiteout = settings.lines is not None and settings.lines.whiteout
+    view_segments = view_lines.view_line_segments(scene, camera, settings.lines,
+                                                  rounded=settings.highlights and not whiteout)
     view_batches = [line_pass.line_batches(segs, LINE_CHUNK) for segs in view_segments]
     last_preview = [time.monotonic()]
 

@@ -16,14 +16,15 @@ def line_instances(scene, gpu_meshes, view_batches):
     return out
 
 
-def view_line_segments(scene, camera, line_settings, counters=None):
+def view_line_segments(scene, camera, line_settings, counters=None, rounded=False):
     """Per instance, type -> LineSegments of the view-dependent types (native view calls). An
-    instance the library refuses (a singular transform, say) gets none, and a report."""
+    instance the library refuses (a singular transform, say) gets none, and a report. With
+    `rounded`, silhouettes of rounded edges lie on the fillets' outline (lines.view_lines)."""
     out, seen = [], {}
     for inst in scene.instances:
         index = seen[id(inst.mesh)] = seen.get(id(inst.mesh), -1) + 1
         try:
-            out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters))
+            out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters, rounded))
         except native.NativeError as e:
             note = f"{inst.mesh.name}: no silhouettes or contours ({e.message})"
             if note not in scene.reports:

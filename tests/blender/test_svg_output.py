@@ -220,8 +220,11 @@ class VisibilityMirrorsLinePass(unittest.TestCase):
                 q = sa[s] + t[:, None] * ab
                 z = 1.0 / (1.0 / za[s] + t * (1.0 / zb[s] - 1.0 / za[s]))
                 pixels.append(pix)
-                decided.append(vis.visible(q, z, seg.faces[s], iid, kind in vis.OUTLINE_TYPES, vec["depth"],
-                                           vec["ids"], cam.px_per_unit, True))
+                outline = kind in vis.OUTLINE_TYPES
+                # A crease past a rounded outline is not drawn at all: counted with the hidden.
+                decided.append(vis.visible(q, z, seg.faces[s], iid, outline, vec["depth"], vec["ids"],
+                                           cam.px_per_unit, True)
+                               & ~vis.past_outline(q, seg.faces[s], iid, outline, vec["depth"], vec["ids"]))
         pix, v = np.concatenate(pixels), np.concatenate(decided)
         ink = alpha[pix[:, 1], pix[:, 0]] > 0.0
         # A hidden sample's pixel may carry another, visible stroke: only those 1 px or more

@@ -1,0 +1,146 @@
+"""Silhouette lines on the rounded outline (docs/lines.md, "Silhouettes of rounded edges"). Where
+the edge pass rounds a convex edge, the surface pass pulls the part's outline in to the fillet's
+(rounded_outline.glsl), and the ink of a silhouette along that edge follows it there instead of
+tracing the sharp edge past the part. Each end of such a segment moves to its fillet's outline
+point: r from the fillet's axis along P = (Na x Nb) x V / |...|, turned towards the sharp edge,
+which lies r C from the axis. That is a move of -r (C - P) in world space, judged with the
+normals and the radius the strip is (zero where the end is no silhouette, as the strip's width
+is), so the stroke's centre lies on the strip's inner side. No bpy: plain-Python tests import it."""
+import numpy as np
+
+from . import rounded_outline
+from .radius_scale import radius_scale
+
+
+def _keys(pairs, count):
+    """One int64 key per unordered vertex pair."""
+    pairs = np.sort(np.asarray(pairs, np.int64).reshape(-1, 2), axis=1)
+    return pairs[:, 0] * max(int(count), 1) + pairs[:, 1]
+
+
+def rounded_records(extract):
+    """(sorted keys, records) of the mesh's convex rounded edges: the strip's own records
+    (rounded_outline._edges, EDGE_TEXELS texels each), found once per extraction."""
+    cached = getattr(extract, "_outline_records", None)
+    if cached is None:
+        recs, _, verts = rounded_outline._edges(extract)
+        known = np.all(verts >= 0, axis=1)
+        recs, verts = recs[known], verts[known]
+        keys = _keys(verts, len(extract.edge_data.positions))
+        order = np.argsort(keys)
+        cached = extract._outline_records = (keys[order], recs[order])
+    return cached
+
+
+def records_of(extract, edge_pairs):
+    """(N,) the index into rounded_records' records of each edge (by its vertex pair); -1 where
+    it is not a convex rounded edge."""
+    keys, _ = rounded_records(extract)
+    if not len(keys) or not len(edge_pairs):
+        return np.full(len(edge_pairs), -1, np.int64)
+    k = _keys(edge_pairs, len(extract.edge_data.positions))
+    at = np.minimum(np.searchsorted(keys, k), len(keys) - 1)
+    return np.where(keys[at] == k, at, -1)
+
+
+def outline_moves(recs, matrix, camera):
+    """(2, N, 3) object-space moves of each record's two ends (its p0, p1) onto its fillet's
+    outline as seen from `camera` (passes.camera.Camera, world space) through `matrix`; zero at
+    an end where the edge is no silhouette."""
+    out = np.zeros((2, len(recs), 3), np.float64)
+    m = np.asarray(matrix, np.float64)
+    lin = m[:3, :3]
+    if not len(recs) or not abs(np.linalg.det(lin)) > 1e-30:
+        return out
+    inv = np.linalg.inv(lin)
+    r = np.asarray(recs, np.float64)
+    ma, mb, o0, o1, ta, tb = (r[:, k, :3] for k in range(6))
+    radius = r[:, 0, 3] * radius_scale(m, ma, mb, o1 - o0)
+    for end, (o, half) in enumerate(((o0, -0.5), (o1, 0.5))):
+        w = o @ lin.T + m[:3, 3]
+        # Normals into world space by the inverse transpose, as el_normal_matrix does.
+        ea = _unit((ma + half * ta) @ inv)
+        eb = _unit((mb + half * tb) @ inv)
+        c = (ea + eb) / np.maximum(1.0 + _dot(ea, eb), 1e-3)[:, None]
+        v = np.broadcast_to(-np.asarray(camera.view_dir, np.float64), w.shape) if camera.orthographic \
+            else np.asarray(camera.eye, np.float64) - w
+        v = _unit(v)
+        p = np.cross(np.cross(ea, eb), v)
+        length = np.linalg.norm(p, axis=1)
+        sil = (_dot(ea, v) * _dot(eb, v) < 0.0) & (length > 1e-6)
+        p = p / np.maximum(length, 1e-30)[:, None]
+        p *= np.where(_dot(p, c) < 0.0, -1.0, 1.0)[:, None]
+        move = -radius[:, None] * (c - p)
+        out[end] = np.where(sil[:, None], move @ inv.T, 0.0)
+    return out
+
+
+def _dot(a, b):
+    return np.einsum("ij,ij->i", a, b)
+
+
+def _unit(a):
+    return a / np.maximum(np.linalg.norm(a, axis=1, keepdims=True), 1e-30)
+
+
+def on_rounded_outline(extract, edge_pairs, p0, p1, matrix, camera):
+    """The ends p0, p1 (object space) of silhouette segments along the mesh edges `edge_pairs`
+    (vertex pairs, p0's vertex first), those on convex rounded edges moved onto their fillets'
+    outline: new arrays, the others' ends unchanged."""
+    at = records_of(extract, edge_pairs)
+    hit = np.flatnonzero(at >= 0)
+    if not len(hit):
+        return p0, p1
+    _, recs = rounded_records(extract)
+    rec = recs[at[hit]]
+    moves = outline_moves(rec, matrix, camera)
+    p0, p1 = np.array(p0, np.float32), np.array(p1, np.float32)
+    # The record may run the other way round: each end takes its own vertex's move.
+    flipped = (_dot(rec[:, 2, :3] - p0[hit], rec[:, 2, :3] - p0[hit])
+               > _dot(rec[:, 2, :3] - p1[hit], rec[:, 2, :3] - p1[hit]))[:, None]
+    d = p1[hit] - p0[hit]
+    p0[hit] += np.where(flipped, moves[1], moves[0]).astype(np.float32)
+    p1[hit] += np.where(flipped, moves[0], moves[1]).astype(np.float32)
+    _join_corners(np.asarray(edge_pairs, np.int64)[hit], hit, d, p0, p1)
+    return p0, p1
+
+
+def _join_corners(pairs, hit, d, p0, p1):
+    """Where two moved silhouette segments meet at a vertex (a box's corner seen from outside),
+    each was moved square to its own edge, and their ends overshoot each other: each ends where
+    its moved line comes closest to the other's (where they cross on screen, but for the little
+    they are skew in depth), or, along a smooth rim whose segments nearly continue each other,
+    both at the mean of their two ends."""
+    verts = pairs.reshape(-1)                               # end k of segment i: 2 i + k
+    order = np.argsort(verts, kind="stable")
+    v = verts[order]
+    first = np.flatnonzero((v[:-1] == v[1:]) & np.r_[True, v[1:-1] != v[:-2]] & np.r_[v[2:] != v[1:-1], True])
+    if not len(first):
+        return
+    e1, e2 = order[first], order[first + 1]
+    ends = [p0, p1]
+
+    def point(e):
+        i = hit[e // 2]
+        return np.where((e % 2 == 0)[:, None], p0[i], p1[i]).astype(np.float64)
+
+    x1, x2 = point(e1), point(e2)
+    d1, d2 = d[e1 // 2].astype(np.float64), d[e2 // 2].astype(np.float64)
+    a, b, c = _dot(d1, d1), _dot(d1, d2), _dot(d2, d2)
+    w = x1 - x2
+    den = a * c - b * b
+    sin2 = den / np.maximum(a * c, 1e-300)
+    ok = sin2 > 0.04  # the lines cross at more than about 11.5 degrees
+    s = np.where(ok, (b * _dot(d2, w) - c * _dot(d1, w)) / np.where(ok, den, 1.0), 0.0)
+    t = np.where(ok, (a * _dot(d2, w) - b * _dot(d1, w)) / np.where(ok, den, 1.0), 0.0)
+    # Only near the vertex: no farther along either line than the two ends lie apart.
+    gap = np.linalg.norm(w, axis=1)
+    near = ok & (np.abs(s) * np.sqrt(a) <= 4.0 * gap) & (np.abs(t) * np.sqrt(c) <= 4.0 * gap)
+    mean = 0.5 * (x1 + x2)
+    # Each end stays on its own line (the moved lines are skew by a little in depth; their
+    # common point would tilt both on screen).
+    for e, x, u, f in ((e1, x1, d1, s), (e2, x2, d2, t)):
+        joint = np.where(near[:, None], x + f[:, None] * u, mean).astype(np.float32)
+        for k in (0, 1):
+            sel = e % 2 == k
+            ends[k][hit[e[sel] // 2]] = joint[sel]

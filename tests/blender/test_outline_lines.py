@@ -1,0 +1,108 @@
+"""Silhouette lines on the rounded outline (addon/outline_lines.py, docs/lines.md): with the
+highlights on, the surface pass pulls a rounded silhouette's outline in to the fillet's, and the
+silhouette's ink follows it there; a crease along that edge does not trace the sharp edge past
+the part. Against the exact fillets' outline, row by row across a box's left and right sides."""
+import os
+import sys
+import unittest
+
+import bpy
+import numpy as np
+
+import helpers
+import scene_zoo as zoo
+
+sys.path.insert(0, os.path.join(helpers.ROOT, "bench"))
+import fillets  # noqa: E402
+
+RESOLUTION = (320, 240)
+CAMERA = np.array((3.0, -4.0, 2.5))
+INK = (1.0, 0.0, 0.0)
+
+
+def box(width_px, mode):
+    """A unit box rounded at width_px pixels on a transparent film: 'fillets' (exact fillets,
+    highlights and lines off: its alpha is the fillets' outline), 'lines' (highlights and red
+    silhouettes and creases, 1.5 px) or 'sharp lines' (the same, highlights off)."""
+    helpers.empty_scene(*RESOLUTION, samples=64 if mode == "fillets" else 8)
+    helpers.add_camera(tuple(CAMERA))
+    helpers.add_sun((0.5, -0.8, 0.6), 4.0)
+    scene = bpy.context.scene
+    scene.render.film_transparent = True
+    cube = zoo.box("Box")
+    mat = zoo.material("BoxMaterial", (0.8, 0.8, 0.8))
+    mat.edgelight.radius = zoo.radius_at_width(width_px, CAMERA, RESOLUTION[0])
+    cube.data.materials.append(mat)
+    s = scene.edgelight
+    if mode == "fillets":
+        fillets.add_fillets(scene, mat.edgelight.radius, 32, exact=True)
+    else:
+        s.use_lines = True
+        for style in (s.line_silhouette, s.line_crease):
+            style.color, style.width = INK, 1.5
+    s.highlights = mode != "sharp lines"
+    return np.asarray(helpers.render()["pixels"]).astype(np.float64)
+
+
+def sides(alpha, rows):
+    """Per row, where the coverage ends on the left and on the right (pixels, 0 at the left edge
+    of the image): the part covers each side's last 8 pixels to its own area, so each side lies
+    that area past the first wholly covered pixel (exact for an outline straight across them)."""
+    out = []
+    for y in rows:
+        a = alpha[y]
+        inside = np.flatnonzero(a >= 0.5)
+        i, j = inside[0] + 4, inside[-1] - 4
+        out.append((i - a[i - 8:i].sum(), j + 1 + a[j + 1:j + 9].sum()))
+    return np.array(out)
+
+
+def ink_centres(rgba, rows, near):
+    """Per row, the centre of the red ink within 6 px of each of `near`'s (left, right) points,
+    weighted by its redness over the other channels: its coverage, over the grey part or the
+    transparent film alike (the pixels are premultiplied)."""
+    red = np.clip(rgba[..., 0] - np.maximum(rgba[..., 1], rgba[..., 2]), 0.0, None)
+    x = np.arange(rgba.shape[1]) + 0.5
+    out = []
+    for y, (left, right) in zip(rows, near):
+        row = []
+        for at in (left, right):
+            w = np.where(np.abs(x - at) <= 6.0, red[y], 0.0)
+            row.append(float((w * x).sum() / w.sum()) if w.sum() > 0.0 else np.nan)
+        out.append(row)
+    return np.array(out)
+
+
+class SilhouetteLines(unittest.TestCase):
+    def test_silhouette_ink_lies_on_the_fillets_outline(self):
+        """At 8 px the strip moves the outline in by up to 0.41 r. The ink's centre, per row
+        across the box's left and right silhouettes, against the fillets' outline: the sharp
+        edge's lines lie that far outside it; EdgeLight's now lie on it. And no ink lies past
+        it by more than the stroke's half width and a pixel (a crease left on the sharp edge
+        would)."""
+        ref = box(8.0, "fillets")[..., 3]
+        rows = np.arange(94, 150, 4)  # clear of the corners, where the outline is the ball's circle
+        outline = sides(ref, rows)
+        for mode in ("lines", "sharp lines"):
+            ink = ink_centres(box(8.0, mode), rows, outline)
+            off = np.abs(ink - outline)
+            print(f"{mode}: ink centre off the fillets' outline by {np.nanmean(off):.2f} px on average, "
+                  f"{np.nanmax(off):.2f} at most ({np.isnan(off).sum()} of {off.size} without ink)")
+            if mode == "sharp lines":
+                self.assertGreater(np.nanmean(off), 1.5, "the sharp edge lies outside the fillets' outline")
+        rgba = box(8.0, "lines")
+        ink = ink_centres(rgba, rows, outline)
+        off = np.abs(ink - outline)
+        self.assertFalse(np.isnan(off).any(), "ink on every row")
+        self.assertLess(float(off.max()), 0.3)
+        red = rgba[..., 0] - np.maximum(rgba[..., 1], rgba[..., 2]) > 0.1
+        past = 0
+        for y, (left, right) in zip(rows, outline):
+            x = np.flatnonzero(red[y]) + 0.5
+            past += int(((x < left - 1.75) | (x > right + 1.75)).sum())
+        print(f"ink past the fillets' outline by more than 1.75 px: {past} pixels")
+        self.assertEqual(past, 0)
+
+
+if __name__ == "__main__":
+    unittest.main()
