@@ -308,9 +308,14 @@ class Memory(unittest.TestCase):
         try:
             bpy.ops.render.render()
             before = rss_mb()
-            for _ in range(2):
+            # The least of the next renders' last two: the driver may still hold one finished
+            # frame's targets at a render's end (bpy 5.0 in the full suite: +126 MB after one
+            # render, back to the baseline after the next); a leak grows with every render.
+            rss = []
+            for _ in range(3):
                 bpy.ops.render.render()
-            after = rss_mb()
+                rss.append(rss_mb())
+            after = min(rss[1:])
             self.assertEqual(engine.last_render, {}, "no record unless a test asks")
         finally:
             engine.capture = True
