@@ -86,23 +86,25 @@ def visible(c, z, faces, instance_id, outline, depth, ids, px_per_unit, perspect
     return own | (inv_shown <= 0.0) | behind_ok
 
 
-def past_outline(c, faces, instance_id, outline, depth, ids):
-    """Which centre points of lines are past the part's outline and not drawn at all (line.frag,
-    the same rule): of a type that lies between faces (not OUTLINE_TYPES), over empty space, with
-    none of the segment's faces in the 3x3 pixels around. Arguments as for visible()."""
+def past_outline(c, z, faces, instance_id, outline, depth, ids, px_per_unit, perspective):
+    """Which centre points of lines lie past the part's rounded outline and are not drawn at all
+    (line.frag's rule where the highlights draw fillets): of a type that lies between faces (not
+    OUTLINE_TYPES), over a pixel that shows none of the segment's faces and nothing in front of
+    the line (empty space, or a surface behind it). Arguments as for visible()."""
     h, w = depth.shape
     c = np.asarray(c, np.float32)
+    z = np.asarray(z, np.float32)
     faces = np.asarray(faces, np.float32)
-    n = len(c)
+    n = len(z)
     inst = np.broadcast_to(np.asarray(instance_id, np.float32), (n,))
     outline = np.broadcast_to(np.asarray(outline, bool), (n,))
     q = np.floor(c).astype(np.int64)
-    empty = depth[np.clip(q[:, 1], 0, h - 1), np.clip(q[:, 0], 0, w - 1)] <= 0.0
-    own = np.zeros(n, bool)
-    for dy in (-1, 0, 1):
-        y = np.clip(q[:, 1] + dy, 0, h - 1)
-        for dx in (-1, 0, 1):
-            x = np.clip(q[:, 0] + dx, 0, w - 1)
-            fid = ids[y, x, 1]
-            own |= (ids[y, x, 0] == inst) & (fid > 0.0) & ((fid == faces[:, 0]) | (fid == faces[:, 1]))
-    return ~outline & empty & ~own
+    y, x = np.clip(q[:, 1], 0, h - 1), np.clip(q[:, 0], 0, w - 1)
+    fid = ids[y, x, 1]
+    own = (ids[y, x, 0] == inst) & (fid > 0.0) & ((fid == faces[:, 0]) | (fid == faces[:, 1]))
+    inv = depth[y, x]
+    world_per_px = (z if perspective else np.float32(1.0)) / np.float32(px_per_unit)
+    bias = np.float32(0.5) * world_per_px + np.float32(REL_BIAS) * np.abs(z)
+    with np.errstate(divide="ignore"):
+        in_front = (inv > 0.0) & (np.float32(1.0) / np.where(inv > 0.0, inv, np.float32(1.0)) <= z + bias)
+    return ~outline & ~own & ~in_front

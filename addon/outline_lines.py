@@ -101,16 +101,17 @@ def on_rounded_outline(extract, edge_pairs, p0, p1, matrix, camera):
     d = p1[hit] - p0[hit]
     p0[hit] += np.where(flipped, moves[1], moves[0]).astype(np.float32)
     p1[hit] += np.where(flipped, moves[0], moves[1]).astype(np.float32)
-    _join_corners(np.asarray(edge_pairs, np.int64)[hit], hit, d, p0, p1)
+    clip = np.asarray(camera.projection, np.float64) @ np.asarray(camera.view, np.float64) @ np.asarray(matrix, np.float64)
+    _join_corners(np.asarray(edge_pairs, np.int64)[hit], hit, d, p0, p1, clip)
     return p0, p1
 
 
-def _join_corners(pairs, hit, d, p0, p1):
+def _join_corners(pairs, hit, d, p0, p1, clip):
     """Where two moved silhouette segments meet at a vertex (a box's corner seen from outside),
-    each was moved square to its own edge, and their ends overshoot each other: each ends where
-    its moved line comes closest to the other's (where they cross on screen, but for the little
-    they are skew in depth), or, along a smooth rim whose segments nearly continue each other,
-    both at the mean of their two ends."""
+    each was moved square to its own edge, and their ends overshoot each other: both end at one
+    point where their images cross, on the first one's line (so neither image tilts, and the
+    SVG output's polylines still join there); along a smooth rim, where the two nearly continue
+    each other, at the mean of their two ends. `clip`: object space -> clip space (4 x 4)."""
     verts = pairs.reshape(-1)                               # end k of segment i: 2 i + k
     order = np.argsort(verts, kind="stable")
     v = verts[order]
@@ -118,7 +119,6 @@ def _join_corners(pairs, hit, d, p0, p1):
     if not len(first):
         return
     e1, e2 = order[first], order[first + 1]
-    ends = [p0, p1]
 
     def point(e):
         i = hit[e // 2]
@@ -126,21 +126,29 @@ def _join_corners(pairs, hit, d, p0, p1):
 
     x1, x2 = point(e1), point(e2)
     d1, d2 = d[e1 // 2].astype(np.float64), d[e2 // 2].astype(np.float64)
-    a, b, c = _dot(d1, d1), _dot(d1, d2), _dot(d2, d2)
-    w = x1 - x2
-    den = a * c - b * b
-    sin2 = den / np.maximum(a * c, 1e-300)
-    ok = sin2 > 0.04  # the lines cross at more than about 11.5 degrees
-    s = np.where(ok, (b * _dot(d2, w) - c * _dot(d1, w)) / np.where(ok, den, 1.0), 0.0)
-    t = np.where(ok, (a * _dot(d2, w) - b * _dot(d1, w)) / np.where(ok, den, 1.0), 0.0)
-    # Only near the vertex: no farther along either line than the two ends lie apart.
-    gap = np.linalg.norm(w, axis=1)
-    near = ok & (np.abs(s) * np.sqrt(a) <= 4.0 * gap) & (np.abs(t) * np.sqrt(c) <= 4.0 * gap)
-    mean = 0.5 * (x1 + x2)
-    # Each end stays on its own line (the moved lines are skew by a little in depth; their
-    # common point would tilt both on screen).
-    for e, x, u, f in ((e1, x1, d1, s), (e2, x2, d2, t)):
-        joint = np.where(near[:, None], x + f[:, None] * u, mean).astype(np.float32)
-        for k in (0, 1):
+    m = np.asarray(clip, np.float64)
+    # Each line's image as a homogeneous 2D line through its clip-space point and direction;
+    # the images cross at their cross product.
+    c1, f1 = _clip(x1, m), _clip(d1, m, 0.0)
+    c2, f2 = _clip(x2, m), _clip(d2, m, 0.0)
+    cross = np.cross(np.cross(c1, f1), np.cross(c2, f2))
+    # On line 1 at the parameter whose clip point is proportional to the crossing.
+    a, b = np.cross(c1, cross), np.cross(f1, cross)
+    lam = -_dot(a, b) / np.maximum(_dot(b, b), 1e-300)
+    joint = x1 + lam[:, None] * d1
+    # Where the images nearly continue each other (or the crossing lies off beyond the ends),
+    # the mean: no farther from the vertex than the two ends lie apart.
+    sin2 = _dot(np.cross(d1, d2), np.cross(d1, d2)) / np.maximum(_dot(d1, d1) * _dot(d2, d2), 1e-300)
+    gap = np.linalg.norm(x1 - x2, axis=1)
+    near = (sin2 > 0.04) & np.isfinite(lam) & (np.linalg.norm(joint - x1, axis=1) <= 4.0 * gap) \
+        & (np.linalg.norm(joint - x2, axis=1) <= 4.0 * gap)
+    joint = np.where(near[:, None], joint, 0.5 * (x1 + x2)).astype(np.float32)
+    for e in (e1, e2):
+        for k, ends in ((0, p0), (1, p1)):
             sel = e % 2 == k
-            ends[k][hit[e[sel] // 2]] = joint[sel]
+            ends[hit[e[sel] // 2]] = joint[sel]
+
+
+def _clip(x, m, w=1.0):
+    """(x, y, w) of points (w = 1) or directions (w = 0) in clip space."""
+    return (np.c_[x, np.full(len(x), w)] @ m.T)[:, [0, 1, 3]]

@@ -43,7 +43,8 @@ def frame_svg_path(scene, layer=None):
 def write(path, scene_data, camera, line_settings, vector):
     """Writes the SVG of one frame; returns its size in bytes."""
     instances = vector_lines.instances_of(scene_data, vector.get("view_segments"))
-    strokes = vector_lines.strokes(instances, line_settings, camera, vector["depth"], vector["ids"])
+    strokes = vector_lines.strokes(instances, line_settings, camera, vector["depth"], vector["ids"],
+                                   vector.get("rounded", False))
     root = svg_write.document(strokes, line_settings, camera.width, camera.height)
     os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
     svg_write.write(path, root)

@@ -65,9 +65,10 @@ def half_widths(style, z, taper_t, camera):
     return 0.5 * w * f
 
 
-def sample_runs(seg, matrix, instance_id, kind, style, camera, depth, ids):
+def sample_runs(seg, matrix, instance_id, kind, style, camera, depth, ids, rounded=False):
     """Runs of equal visibility and stepped width along each segment: (a, b, hidden, width)
-    arrays, a / b the run's ends in pixels (y up)."""
+    arrays, a / b the run's ends in pixels (y up). `rounded`: the fillets' outline was drawn
+    (frame.render's vector["rounded"])."""
     sa, sb, za, zb, t0, t1, keep = project(seg, matrix, camera)
     taper = np.asarray(seg.taper, np.float64)
     ta = taper[:, 0] + t0 * (taper[:, 1] - taper[:, 0])
@@ -99,8 +100,10 @@ def sample_runs(seg, matrix, instance_id, kind, style, camera, depth, ids):
     width = np.round(2.0 * (ra[s] + t * (rb[s] - ra[s])) / WIDTH_STEP_PX) * WIDTH_STEP_PX
     # Outside the camera's clip range a line is not drawn at all, nor is a crease past the
     # part's rounded outline (line_visibility.past_outline).
-    clipped = line_visibility.clipped(z, camera.projection) | line_visibility.past_outline(
-        c, faces[s], instance_id, kind in line_visibility.OUTLINE_TYPES, depth, ids)
+    clipped = line_visibility.clipped(z, camera.projection)
+    if rounded:
+        clipped |= line_visibility.past_outline(c, z, faces[s], instance_id, kind in line_visibility.OUTLINE_TYPES,
+                                                depth, ids, camera.px_per_unit, not camera.orthographic)
     # A run starts where the segment, the visibility, the width or the clipping changes.
     start = np.ones(len(s), bool)
     start[1:] = ((s[1:] != s[:-1]) | (vis[1:] != vis[:-1]) | (width[1:] != width[:-1])
@@ -185,7 +188,7 @@ def simplify(p, tol=TOLERANCE_PX):
     return p[keep]
 
 
-def strokes(instances, settings, camera, depth, ids):
+def strokes(instances, settings, camera, depth, ids, rounded=False):
     """type -> [Stroke] for the drawn types of `settings` (LineSettings).
 
     instances: [(matrix, {type: LineSegments}, instance id)]; depth / ids: the first sample's
@@ -193,7 +196,7 @@ def strokes(instances, settings, camera, depth, ids):
     drawn (dimmed). Coordinates are flipped to SVG's (y down)."""
     out = {}
     for kind, style in settings.styles:
-        parts = [sample_runs(segs[kind], matrix, iid, kind, style, camera, depth, ids)
+        parts = [sample_runs(segs[kind], matrix, iid, kind, style, camera, depth, ids, rounded)
                  for matrix, segs, iid in instances if kind in segs and len(segs[kind])]
         if not parts:
             continue

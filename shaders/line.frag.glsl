@@ -70,6 +70,21 @@ void main()
   float inv_other = inv_c;
   float world_per_px = (persp ? z : 1.0) / frame.camera.x;
   float bias = 0.5 * world_per_px + line_vis.y * abs(z);
+  /* Where the highlights draw fillets (line_vis.w < 0, a type that lies between faces: a crease),
+   * the surface pass moved a rounded silhouette's outline in (rounded_outline.glsl) and the
+   * silhouette line with it (outline_lines.py), but a crease along that edge still runs on the
+   * sharp edge. Its ink over a pixel that shows none of its faces and nothing in front of it
+   * (empty space, or a surface behind it) lies past the part's outline: not drawn, not dimmed
+   * either. Judged per pixel, not on the centre line: the crease's half over the part stays
+   * within the moved silhouette's stroke, and a crease away from any outline has its faces
+   * under every pixel. */
+  if (line_vis.w < -0.5) {
+    ivec2 pp = clamp(ivec2(p), ivec2(0), size);
+    float inv_p = texelFetch(surface_depth, pp, 0).r;
+    if (!el_own_face(texelFetch(surface_id, pp, 0).rg) && !(inv_p > 0.0 && 1.0 / inv_p <= z + bias)) {
+      discard;
+    }
+  }
   /* Most ink lies on one of its own faces at the centre pixel: then the 3x3 walk is skipped
    * (whole 4x4 blocks of a stroke usually agree, so llvmpipe skips it too). */
   bool own = el_own_face(id_c);
@@ -113,14 +128,6 @@ void main()
     /* Empty space beyond: an outline against the background, whatever the centre face's plane
      * says (near a convex outline, a facet's plane continued lies in front of the outline). */
     under = under && inv_other > 0.0;
-    /* A line of a type that lies between faces (a crease, not an outline) over empty space with
-     * none of its faces within a pixel lies past the part's outline: where a rounded silhouette
-     * moved that outline in (rounded_outline.glsl), its silhouette line moved with it
-     * (outline_lines.py), and a crease along it would trace the sharp edge beside the part. It
-     * is not hidden there but gone, dimmed hidden lines too. */
-    if (line_vis.w < 0.5 && !own && !(inv_c > 0.0)) {
-      discard;
-    }
   }
   float inv_shown = line_vis.w > 0.5 && !under ? inv_other : inv_c;
   bool visible = own || inv_shown <= 0.0 || z <= 1.0 / inv_shown + bias;

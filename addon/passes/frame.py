@@ -77,7 +77,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
                     targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
             checkpoint = CancelCheck(targets.lines, cancelled) if cancelled else None
             if line_pass.draw_lines(targets, view_lines.line_instances(scene, gpu_meshes, view_batches) if settings.lines else [],
-                                    settings.lines, ubo, stats, checkpoint):
+                                    settings.lines, ubo, stats, checkpoint, rounded=settings.highlights and not whiteout):
                 break
         composite_pass.draw_composite(targets, background, full_screen, 1.0 / samples)
         stats.samples += 1
@@ -142,7 +142,9 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None, pa
     PREVIEW_INTERVAL seconds of drawing.
     `vector`, when a dict, receives what the line pass decided visibility from (the vector
     output repeats its rule): "depth" and "ids" (the first sample's surface_depth and
-    surface_id) and "view_segments" (per instance, the view-dependent LineSegments)."""
+    surface_id), "view_segments" (per instance, the view-dependent LineSegments) and "rounded"
+    (whether the fillets' outline was drawn and the silhouettes on it, so that creases past it
+    are left out: line_pass.draw_lines)."""
     w, h = camera.width, camera.height
     wanted = set(passes or ())
     targets = Targets(w, h, normal="normal" in wanted, surface_sum="surface" in wanted)
@@ -168,7 +170,9 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None, pa
             if name in wanted:
                 passes[name] = read(texture, w, h)
         if vector is not None:  # what the line pass reads; later samples overwrite the depth
-            vector.update(depth=read(targets.surface_depth, w, h, 1)[..., 0], view_segments=view_segments)
+            vector.update(depth=read(targets.surface_depth, w, h, 1)[..., 0], view_segments=view_segments,
+                          rounded=bool(settings.highlights and not whiteout and settings.lines is not None
+                                       and "silhouette" in settings.lines.types))
 
     stats = draw(scene, camera, settings, targets, gpu_meshes, each_sample, cancelled, view_batches,
                  first_sample if wanted & {"depth", "normal"} or vector is not None else None)

@@ -124,10 +124,12 @@ def _stretch(m):
     return float(np.linalg.norm(np.asarray(m, np.float64)[:3, :3], 2))
 
 
-def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None):
+def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None, rounded=False):
     """instances: [(model matrix, {type: LineSet}, surface id of the instance)];
     types drawn in settings' order. checkpoint(), when given, runs after each batch; True stops the pass (a cancel):
-    returns whether it stopped."""
+    returns whether it stopped. `rounded`: the surface pass drew the fillets' outline; with the
+    silhouettes drawn (on it), ink of the types that lie between faces is not drawn past it
+    (line.frag.glsl)."""
     if settings is None and targets.lines_empty:
         return False  # still clear from the last frame: no full-screen clear per frame without lines
     shader = shader_lib.get("line")
@@ -145,6 +147,9 @@ def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None):
         shader_lib.set_sampler(shader, "surface_depth", targets.surface_depth)
         shader_lib.set_sampler(shader, "surface_id", targets.surface_id)
         stretch = {}
+        # Ink of the types between faces past the fillets' outline is left out where the
+        # silhouettes, moved onto that outline, ink it instead (line.frag.glsl).
+        past = rounded and "silhouette" in settings.types
         for kind, style in settings.styles:
             shader_lib.set_uniform(shader, "line_color", (*style.color, style.opacity))
             shader_lib.set_uniform(shader, "line_style", (style.width, 1.0 if style.scene_units else 0.0, style.min_pixels, style.taper))
@@ -157,7 +162,7 @@ def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None):
                     stretch[key] = _stretch(matrix)
                 shader_lib.set_uniform(shader, "model", _mat(matrix))
                 shader_lib.set_uniform(shader, "line_vis", (settings.hidden_opacity, REL_BIAS, float(instance_id),
-                                                            1.0 if kind in OUTLINE_TYPES else 0.0))
+                                                            1.0 if kind in OUTLINE_TYPES else (-1.0 if past else 0.0)))
                 # A chord's width is interpolated between its ends: a taper, whose peak a chord
                 # could span, is drawn segment by segment.
                 shader_lib.set_uniform(shader, "line_lod", (TOLERANCE_PX if style.taper <= 0.0 else -1.0,

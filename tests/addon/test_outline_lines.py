@@ -77,16 +77,28 @@ class OutlinePoint(unittest.TestCase):
 class Corners(unittest.TestCase):
     def test_two_moved_segments_end_where_their_lines_cross(self):
         """Segments 0 -> 1 along x and 1 -> 2 along y meet at vertex 1; moved square to
-        themselves by 0.1 (into the corner), each overshoots the other. Both end at (0.9, 0.1)."""
+        themselves by 0.1 (into the corner), each overshoots the other. Both end at (0.9, 0.1),
+        seen along z (the clip matrix the identity)."""
         pairs = np.array([[0, 1], [1, 2]])
         p0 = np.array([[0.0, 0.1, 0.0], [0.9, 0.0, 0.0]], np.float32)
         p1 = np.array([[1.0, 0.1, 0.0], [0.9, 1.0, 0.0]], np.float32)
         d = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], np.float32)
-        outline_lines._join_corners(pairs, np.arange(2), d, p0, p1)
+        outline_lines._join_corners(pairs, np.arange(2), d, p0, p1, np.eye(4))
         np.testing.assert_allclose(p1[0], (0.9, 0.1, 0.0), atol=1e-6)
         np.testing.assert_allclose(p0[1], (0.9, 0.1, 0.0), atol=1e-6)
         np.testing.assert_allclose(p0[0], (0.0, 0.1, 0.0))  # free ends stay
         np.testing.assert_allclose(p1[1], (0.9, 1.0, 0.0))
+
+    def test_skew_lines_end_where_their_images_cross(self):
+        """The same corner with the second line moved 0.3 towards the eye (z), seen along z:
+        both ends at one point on the first line whose image is the crossing, (0.9, 0.1, 0)."""
+        pairs = np.array([[0, 1], [1, 2]])
+        p0 = np.array([[0.0, 0.1, 0.0], [0.9, 0.0, 0.3]], np.float32)
+        p1 = np.array([[1.0, 0.1, 0.0], [0.9, 1.0, 0.3]], np.float32)
+        d = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], np.float32)
+        outline_lines._join_corners(pairs, np.arange(2), d, p0, p1, np.eye(4))
+        np.testing.assert_allclose(p1[0], (0.9, 0.1, 0.0), atol=1e-6)
+        np.testing.assert_array_equal(p0[1], p1[0])
 
     def test_segments_that_nearly_continue_each_other_meet_halfway(self):
         """Along a smooth rim the two lines cross far off or not at all: the ends meet at their
@@ -95,7 +107,7 @@ class Corners(unittest.TestCase):
         p0 = np.array([[0.0, 0.0, 0.0], [1.0, 0.02, 0.0]], np.float32)
         p1 = np.array([[1.0, 0.0, 0.0], [2.0, 0.05, 0.0]], np.float32)
         d = np.array([[1.0, 0.0, 0.0], [1.0, 0.03, 0.0]], np.float32)
-        outline_lines._join_corners(pairs, np.arange(2), d, p0, p1)
+        outline_lines._join_corners(pairs, np.arange(2), d, p0, p1, np.eye(4))
         np.testing.assert_allclose(p1[0], (1.0, 0.01, 0.0), atol=1e-6)
         np.testing.assert_allclose(p0[1], (1.0, 0.01, 0.0), atol=1e-6)
 

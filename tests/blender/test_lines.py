@@ -225,7 +225,8 @@ class Joins(unittest.TestCase):
         quads is a notch on the outside of the join)."""
         eye = (4.0, -5.5, 3.5)
         for width in (1.0, 4.0, 12.0):
-            scene = helpers.empty_scene(480, 480)
+            # A sharp corner: with the highlights on, the outline's is the fillets' (test_outline_lines).
+            scene = helpers.empty_scene(480, 480, highlights=False)
             helpers.only_lines(scene, crease=width, silhouette=width)
             bpy.ops.mesh.primitive_cube_add(size=2.0)
             helpers.add_camera(eye)

@@ -161,6 +161,9 @@ class InkMatchesLinePass(unittest.TestCase):
         helpers.needs_gpu()
         scene = helpers.open_sample("toon")
         scene.edgelight.use_lines = True
+        # The sample's one open crease chain runs along a rounded silhouette: with the highlights
+        # on, the silhouette inks it on the fillets' outline, and the crease is left out.
+        scene.edgelight.highlights = False
         for kind in ("silhouette", "crease", "border"):
             style = getattr(scene.edgelight, "line_" + kind)
             style.unit, style.width, style.taper = 'PIXELS', 3.0, 0.5
@@ -221,10 +224,12 @@ class VisibilityMirrorsLinePass(unittest.TestCase):
                 z = 1.0 / (1.0 / za[s] + t * (1.0 / zb[s] - 1.0 / za[s]))
                 pixels.append(pix)
                 outline = kind in vis.OUTLINE_TYPES
-                # A crease past a rounded outline is not drawn at all: counted with the hidden.
+                # A crease past a rounded outline is not drawn at all, judged at each pixel:
+                # counted with the hidden.
                 decided.append(vis.visible(q, z, seg.faces[s], iid, outline, vec["depth"], vec["ids"],
                                            cam.px_per_unit, True)
-                               & ~vis.past_outline(q, seg.faces[s], iid, outline, vec["depth"], vec["ids"]))
+                               & ~(vec["rounded"] & vis.past_outline(p, z, seg.faces[s], iid, outline, vec["depth"],
+                                                                     vec["ids"], cam.px_per_unit, True)))
         pix, v = np.concatenate(pixels), np.concatenate(decided)
         ink = alpha[pix[:, 1], pix[:, 0]] > 0.0
         # A hidden sample's pixel may carry another, visible stroke: only those 1 px or more
