@@ -28,26 +28,19 @@ def visible(c, z, faces, instance_id, outline, depth, ids, px_per_unit, perspect
     empty); ids: (h, w, >= 2) its instance and face ids, both as read back (row 0 at the bottom).
     """
     h, w = depth.shape
-    c = np.asarray(c, np.float32)
-    z = np.asarray(z, np.float32)
-    faces = np.asarray(faces, np.float32)
+    c, z, faces, inst, outline, q, world_per_px, bias = _points(c, z, faces, instance_id, outline, px_per_unit,
+                                                                perspective)
     n = len(z)
-    inst = np.broadcast_to(np.asarray(instance_id, np.float32), (n,))
-    outline = np.broadcast_to(np.asarray(outline, bool), (n,))
-    q = np.floor(c).astype(np.int64)
     yc, xc = np.clip(q[:, 1], 0, h - 1), np.clip(q[:, 0], 0, w - 1)
     id_c = ids[yc, xc, :2]
     inv_c = depth[yc, xc]
-    world_per_px = (z if perspective else np.float32(1.0)) / np.float32(px_per_unit)
-    bias = np.float32(0.5) * world_per_px + np.float32(REL_BIAS) * np.abs(z)
     # The 3x3 pixels' ids and depths, k = (dy + 1) * 3 + (dx + 1) as in the shader.
     nid, ninv, own = [], [], np.zeros(n, bool)
     for dy in (-1, 0, 1):
         y = np.clip(q[:, 1] + dy, 0, h - 1)
         for dx in (-1, 0, 1):
             x = np.clip(q[:, 0] + dx, 0, w - 1)
-            fid = ids[y, x, 1]
-            own |= (ids[y, x, 0] == inst) & (fid > 0.0) & ((fid == faces[:, 0]) | (fid == faces[:, 1]))
+            own |= _own_face(ids, y, x, inst, faces)
             nid.append(ids[y, x, :2])
             ninv.append(depth[y, x])
     same = [np.all(i == id_c, axis=1) for i in nid]
@@ -92,19 +85,29 @@ def past_outline(c, z, faces, instance_id, outline, depth, ids, px_per_unit, per
     OUTLINE_TYPES), over a pixel that shows none of the segment's faces and nothing in front of
     the line (empty space, or a surface behind it). Arguments as for visible()."""
     h, w = depth.shape
+    c, z, faces, inst, outline, q, _, bias = _points(c, z, faces, instance_id, outline, px_per_unit, perspective)
+    y, x = np.clip(q[:, 1], 0, h - 1), np.clip(q[:, 0], 0, w - 1)
+    inv = depth[y, x]
+    with np.errstate(divide="ignore"):
+        in_front = (inv > 0.0) & (np.float32(1.0) / np.where(inv > 0.0, inv, np.float32(1.0)) <= z + bias)
+    return ~outline & ~_own_face(ids, y, x, inst, faces) & ~in_front
+
+
+def _points(c, z, faces, instance_id, outline, px_per_unit, perspective):
+    """The shader's inputs per point as float32 arrays (the instance id and outline flag one
+    each), the pixel each lies in, and the world size of a pixel and the depth tolerance there."""
     c = np.asarray(c, np.float32)
     z = np.asarray(z, np.float32)
     faces = np.asarray(faces, np.float32)
     n = len(z)
     inst = np.broadcast_to(np.asarray(instance_id, np.float32), (n,))
     outline = np.broadcast_to(np.asarray(outline, bool), (n,))
-    q = np.floor(c).astype(np.int64)
-    y, x = np.clip(q[:, 1], 0, h - 1), np.clip(q[:, 0], 0, w - 1)
-    fid = ids[y, x, 1]
-    own = (ids[y, x, 0] == inst) & (fid > 0.0) & ((fid == faces[:, 0]) | (fid == faces[:, 1]))
-    inv = depth[y, x]
     world_per_px = (z if perspective else np.float32(1.0)) / np.float32(px_per_unit)
     bias = np.float32(0.5) * world_per_px + np.float32(REL_BIAS) * np.abs(z)
-    with np.errstate(divide="ignore"):
-        in_front = (inv > 0.0) & (np.float32(1.0) / np.where(inv > 0.0, inv, np.float32(1.0)) <= z + bias)
-    return ~outline & ~own & ~in_front
+    return c, z, faces, inst, outline, np.floor(c).astype(np.int64), world_per_px, bias
+
+
+def _own_face(ids, y, x, inst, faces):
+    """Whether pixel (y, x) shows one of the point's own faces, of its instance (el_own_face)."""
+    fid = ids[y, x, 1]
+    return (ids[y, x, 0] == inst) & (fid > 0.0) & ((fid == faces[:, 0]) | (fid == faces[:, 1]))

@@ -95,12 +95,10 @@ def on_rounded_outline(extract, edge_pairs, p0, p1, matrix, camera):
     rec = recs[at[hit]]
     moves = outline_moves(rec, matrix, camera)
     p0, p1 = np.array(p0, np.float32), np.array(p1, np.float32)
-    # The record may run the other way round: each end takes its own vertex's move.
-    flipped = (_dot(rec[:, 2, :3] - p0[hit], rec[:, 2, :3] - p0[hit])
-               > _dot(rec[:, 2, :3] - p1[hit], rec[:, 2, :3] - p1[hit]))[:, None]
     d = p1[hit] - p0[hit]
-    p0[hit] += np.where(flipped, moves[1], moves[0]).astype(np.float32)
-    p1[hit] += np.where(flipped, moves[0], moves[1]).astype(np.float32)
+    # The record runs as the segment does: both take their ends from the mesh's edge array.
+    p0[hit] += moves[0].astype(np.float32)
+    p1[hit] += moves[1].astype(np.float32)
     clip = np.asarray(camera.projection, np.float64) @ np.asarray(camera.view, np.float64) @ np.asarray(matrix, np.float64)
     _join_corners(np.asarray(edge_pairs, np.int64)[hit], hit, d, p0, p1, clip)
     return p0, p1

@@ -74,16 +74,19 @@ class OutlinePoint(unittest.TestCase):
                                    outline_lines.outline_moves(rec, np.eye(4), ortho((0.0, 0.6, 0.8))), atol=1e-6)
 
 
+def join(p0, p1, d):
+    """Segments 0 -> 1 and 1 -> 2 (p0, p1, directions d), seen along z: both joined in place."""
+    p0, p1 = np.array(p0, np.float32), np.array(p1, np.float32)
+    outline_lines._join_corners(np.array([[0, 1], [1, 2]]), np.arange(2), np.array(d, np.float32), p0, p1, np.eye(4))
+    return p0, p1
+
+
 class Corners(unittest.TestCase):
     def test_two_moved_segments_end_where_their_lines_cross(self):
         """Segments 0 -> 1 along x and 1 -> 2 along y meet at vertex 1; moved square to
         themselves by 0.1 (into the corner), each overshoots the other. Both end at (0.9, 0.1),
         seen along z (the clip matrix the identity)."""
-        pairs = np.array([[0, 1], [1, 2]])
-        p0 = np.array([[0.0, 0.1, 0.0], [0.9, 0.0, 0.0]], np.float32)
-        p1 = np.array([[1.0, 0.1, 0.0], [0.9, 1.0, 0.0]], np.float32)
-        d = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], np.float32)
-        outline_lines._join_corners(pairs, np.arange(2), d, p0, p1, np.eye(4))
+        p0, p1 = join([[0.0, 0.1, 0.0], [0.9, 0.0, 0.0]], [[1.0, 0.1, 0.0], [0.9, 1.0, 0.0]], [[1, 0, 0], [0, 1, 0]])
         np.testing.assert_allclose(p1[0], (0.9, 0.1, 0.0), atol=1e-6)
         np.testing.assert_allclose(p0[1], (0.9, 0.1, 0.0), atol=1e-6)
         np.testing.assert_allclose(p0[0], (0.0, 0.1, 0.0))  # free ends stay
@@ -92,22 +95,15 @@ class Corners(unittest.TestCase):
     def test_skew_lines_end_where_their_images_cross(self):
         """The same corner with the second line moved 0.3 towards the eye (z), seen along z:
         both ends at one point on the first line whose image is the crossing, (0.9, 0.1, 0)."""
-        pairs = np.array([[0, 1], [1, 2]])
-        p0 = np.array([[0.0, 0.1, 0.0], [0.9, 0.0, 0.3]], np.float32)
-        p1 = np.array([[1.0, 0.1, 0.0], [0.9, 1.0, 0.3]], np.float32)
-        d = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], np.float32)
-        outline_lines._join_corners(pairs, np.arange(2), d, p0, p1, np.eye(4))
+        p0, p1 = join([[0.0, 0.1, 0.0], [0.9, 0.0, 0.3]], [[1.0, 0.1, 0.0], [0.9, 1.0, 0.3]], [[1, 0, 0], [0, 1, 0]])
         np.testing.assert_allclose(p1[0], (0.9, 0.1, 0.0), atol=1e-6)
         np.testing.assert_array_equal(p0[1], p1[0])
 
     def test_segments_that_nearly_continue_each_other_meet_halfway(self):
         """Along a smooth rim the two lines cross far off or not at all: the ends meet at their
         mean."""
-        pairs = np.array([[0, 1], [1, 2]])
-        p0 = np.array([[0.0, 0.0, 0.0], [1.0, 0.02, 0.0]], np.float32)
-        p1 = np.array([[1.0, 0.0, 0.0], [2.0, 0.05, 0.0]], np.float32)
-        d = np.array([[1.0, 0.0, 0.0], [1.0, 0.03, 0.0]], np.float32)
-        outline_lines._join_corners(pairs, np.arange(2), d, p0, p1, np.eye(4))
+        p0, p1 = join([[0.0, 0.0, 0.0], [1.0, 0.02, 0.0]], [[1.0, 0.0, 0.0], [2.0, 0.05, 0.0]],
+                      [[1.0, 0.0, 0.0], [1.0, 0.03, 0.0]])
         np.testing.assert_allclose(p1[0], (1.0, 0.01, 0.0), atol=1e-6)
         np.testing.assert_allclose(p0[1], (1.0, 0.01, 0.0), atol=1e-6)
 
