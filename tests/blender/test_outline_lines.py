@@ -20,19 +20,32 @@ CAMERA = np.array((3.0, -4.0, 2.5))
 INK = (1.0, 0.0, 0.0)
 
 
-def box(width_px, mode):
+def box(width_px, mode, made="object"):
     """A unit box rounded at width_px pixels on a transparent film: 'fillets' (exact fillets,
     highlights and lines off: its alpha is the fillets' outline), 'lines' (highlights and red
-    silhouettes and creases, 1.5 px) or 'sharp lines' (the same, highlights off)."""
+    silhouettes and creases, 1.5 px) or 'sharp lines' (the same, highlights off). `made`: an
+    'object', a 'mirrored collection instance' (an empty scaled -1 in x instancing it: the same
+    image, since the box is symmetric, through a matrix that flips handedness) or a 'geometry
+    nodes instance' (a Mesh Cube node's box instanced on one point, turned 90 degrees about z:
+    the same image again)."""
     helpers.empty_scene(*RESOLUTION, samples=64 if mode == "fillets" else 8)
     helpers.add_camera(tuple(CAMERA))
     helpers.add_sun((0.5, -0.8, 0.6), 4.0)
     scene = bpy.context.scene
     scene.render.film_transparent = True
-    cube = zoo.box("Box")
     mat = zoo.material("BoxMaterial", (0.8, 0.8, 0.8))
     mat.edgelight.radius = zoo.radius_at_width(width_px, CAMERA, RESOLUTION[0])
-    cube.data.materials.append(mat)
+    if made == "geometry nodes instance":
+        zoo.geometry_nodes(zoo.mesh_object("Host", [(5.0, 5.0, 5.0)], []), lambda n, ln, g: cube_instance(n, ln, mat))
+    elif made == "mirrored collection instance":
+        part = bpy.data.collections.new("Part")
+        zoo.box("Box", collection=part).data.materials.append(mat)
+        empty = bpy.data.objects.new("Mirror", None)
+        empty.instance_type, empty.instance_collection = 'COLLECTION', part
+        empty.scale = (-1.0, 1.0, 1.0)
+        scene.collection.objects.link(empty)
+    else:
+        zoo.box("Box").data.materials.append(mat)
     s = scene.edgelight
     if mode == "fillets":
         fillets.add_fillets(scene, mat.edgelight.radius, 32, exact=True)
@@ -42,6 +55,22 @@ def box(width_px, mode):
             style.color, style.width = INK, 1.5
     s.highlights = mode != "sharp lines"
     return np.asarray(helpers.render()["pixels"]).astype(np.float64)
+
+
+def cube_instance(nodes, links, mat):
+    point = nodes.new('GeometryNodePoints')
+    point.inputs["Count"].default_value = 1
+    cube = nodes.new('GeometryNodeMeshCube')
+    for k in ("Vertices X", "Vertices Y", "Vertices Z"):
+        cube.inputs[k].default_value = 2
+    paint = nodes.new('GeometryNodeSetMaterial')
+    paint.inputs["Material"].default_value = mat
+    links.new(cube.outputs["Mesh"], paint.inputs["Geometry"])
+    inst = nodes.new('GeometryNodeInstanceOnPoints')
+    inst.inputs["Rotation"].default_value = (0.0, 0.0, np.pi / 2.0)
+    links.new(point.outputs[0], inst.inputs["Points"])
+    links.new(paint.outputs["Geometry"], inst.inputs["Instance"])
+    return inst.outputs["Instances"]
 
 
 def sides(alpha, rows):
@@ -123,6 +152,23 @@ class SilhouetteLines(unittest.TestCase):
             # 2.78) at 4 px with the crease drawn beside the moved silhouette.
             self.assertLess(float(np.abs(ink - 1.5).max()), 0.1, f"{width} px")
             self.assertLess(float(off.max()), 0.3, f"{width} px")
+
+    def test_instances_and_mirrored_objects(self):
+        """The move is computed per instance through its own matrix: a box instanced by
+        Geometry Nodes (turned 90 degrees) and one through a collection instance mirrored in x
+        (a matrix of negative determinant, whose normals the inverse transpose keeps outward)
+        draw their silhouettes on the same fillets' outline as the plain object at 8 px."""
+        ref = box(8.0, "fillets")[..., 3]
+        rows = np.arange(94, 150, 4)
+        outline = sides(ref, rows)
+        for made in ("geometry nodes instance", "mirrored collection instance"):
+            rgba = box(8.0, "lines", made)
+            off = np.abs(ink_centres(rgba, rows, outline) - outline)
+            print(f"{made}: ink centre off the fillets' outline by {np.nanmean(off):.2f} px on average, "
+                  f"{np.nanmax(off):.2f} at most")
+            self.assertFalse(np.isnan(off).any(), made)
+            self.assertLess(float(off.max()), 0.3, made)
+
 
 if __name__ == "__main__":
     unittest.main()
