@@ -61,18 +61,27 @@ def outline_moves(recs, matrix, camera):
         # Normals into world space by the inverse transpose, as el_normal_matrix does.
         ea = _unit((ma + half * ta) @ inv)
         eb = _unit((mb + half * tb) @ inv)
-        c = (ea + eb) / np.maximum(1.0 + _dot(ea, eb), 1e-3)[:, None]
         v = np.broadcast_to(-np.asarray(camera.view_dir, np.float64), w.shape) if camera.orthographic \
             else np.asarray(camera.eye, np.float64) - w
-        v = _unit(v)
-        p = np.cross(np.cross(ea, eb), v)
-        length = np.linalg.norm(p, axis=1)
-        sil = (_dot(ea, v) * _dot(eb, v) < 0.0) & (length > 1e-6)
-        p = p / np.maximum(length, 1e-30)[:, None]
-        p *= np.where(_dot(p, c) < 0.0, -1.0, 1.0)[:, None]
+        p, c, sil = fillet_outline(ea, eb, _unit(v))
         move = -radius[:, None] * (c - p)
         out[end] = np.where(sil[:, None], move @ inv.T, 0.0)
     return out
+
+
+def fillet_outline(na, nb, v):
+    """(P, C, silhouette) of convex fillets of radius 1 between faces of unit normals na, nb
+    (N, 3) seen along v (unit, towards the eye): P the unit direction from the axis to the
+    outline point, turned towards the sharp edge, which lies C from the axis; silhouette where
+    one face faces the eye and the other does not (elsewhere P = 0). The numpy copy of
+    rounded_outline.glsl's el_fillet_outline, pinned to it by test_fillet_outline."""
+    c = (na + nb) / np.maximum(1.0 + _dot(na, nb), 1e-3)[:, None]
+    p = np.cross(np.cross(na, nb), v)
+    length = np.linalg.norm(p, axis=1)
+    sil = (_dot(na, v) * _dot(nb, v) < 0.0) & (length > 1e-6)
+    p = p / np.maximum(length, 1e-30)[:, None]
+    p *= np.where(_dot(p, c) < 0.0, -1.0, 1.0)[:, None]
+    return np.where(sil[:, None], p, 0.0), c, sil
 
 
 def _dot(a, b):

@@ -9,6 +9,23 @@
  * samplers outline_edges, outline_corners and outline_triangles, and their layouts as defines
  * (EL_OUTLINE_*: rounded_outline.py's constants, passes/surface_pass.py). */
 #ifdef EL_ROUNDED_OUTLINE
+/* A convex fillet of radius 1 between faces of unit normals na, nb, seen along V (unit, towards
+ * the eye): xyz, the unit direction P from its axis to its outline point, turned towards the sharp
+ * edge, which lies C from the axis; w, 1 where one face faces the eye and the other does not (a
+ * silhouette), else 0 (and P = 0). outline_lines.fillet_outline is its numpy copy (the ink's move
+ * onto the outline), pinned to this text by tests/blender/test_fillet_outline.py. */
+vec4 el_fillet_outline(vec3 na, vec3 nb, vec3 V, out vec3 C)
+{
+  C = (na + nb) / max(1.0 + dot(na, nb), 1e-3);
+  vec3 P = cross(cross(na, nb), V);
+  float len = length(P);
+  if (!(dot(na, V) * dot(nb, V) < 0.0) || !(len > 1e-6)) {
+    return vec4(0.0);
+  }
+  P /= len;
+  return vec4(dot(P, C) < 0.0 ? -P : P, 1.0);
+}
+
 /* For each of triangle `tri`'s listed edges, at this vertex (clip position `clip`): `dist`, its
  * signed distance in pixels from the edge's image line (positive on its faces' side), `along`,
  * where its foot lies on the edge's image (0 and 1: the ends; both affine on screen, so
@@ -57,15 +74,12 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
        * nothing where its neighbour's does, and its end's half disc reaches no farther. */
       float half_turn = end == 0 ? -0.5 : 0.5;
       vec3 ea = normalize(nm * (ma + half_turn * ta)), eb = normalize(nm * (mb + half_turn * tb));
-      vec3 C = (ea + eb) / max(1.0 + dot(ea, eb), 1e-3);
-      vec3 E = cross(ea, eb);
       vec3 to_eye = persp ? frame.eye.xyz - (end == 0 ? w0 : w1) : -frame.view_dir.xyz;
-      vec3 V = normalize(to_eye);
-      vec3 P = cross(E, V);
-      float len = length(P);
-      if (dot(ea, V) * dot(eb, V) < 0.0 && len > 1e-6) {
+      vec3 C;
+      vec4 P = el_fillet_outline(ea, eb, normalize(to_eye), C);
+      if (P.w > 0.0) {
         float px_per_world = frame.camera.x / (persp ? max(length(to_eye), 1e-30) : 1.0);
-        width[end] = t0.w * scale * max(abs(dot(P / len, C)) - 1.0, 0.0) * px_per_world;
+        width[end] = t0.w * scale * max(dot(P.xyz, C) - 1.0, 0.0) * px_per_world;
       }
     }
     if (!(max(width.x, width.y) > 0.0)) {
