@@ -15,11 +15,12 @@ EDGES_PER_ROW = 1024
 # its three sectors' normals (AB, BC, CA; corner_patches.Corners).
 CORNER_TEXELS = 5
 CORNERS_PER_ROW = 1024
-# Per triangle two texels: the numbers of up to EDGES_PER_TRIANGLE edges, then of up to
-# CORNERS_PER_TRIANGLE corners, each plus one (0: none).
-EDGES_PER_TRIANGLE = 4
+# Per triangle three texels: the numbers of up to EDGES_PER_TRIANGLE edges, four to a texel,
+# then of up to CORNERS_PER_TRIANGLE corners, each plus one (0: none). A sliver of an n-gon's fan
+# (a cylinder's 32-sided cap) lies in the reach of up to six rims' strips.
+EDGES_PER_TRIANGLE = 8
 CORNERS_PER_TRIANGLE = 4  # a quad's half lies in the zones of all four of its corners
-TRIANGLE_TEXELS = 2
+TRIANGLE_TEXELS = 3
 TRIANGLES_PER_ROW = 2048
 
 
@@ -27,7 +28,8 @@ def layout_defines():
     """The texture layouts above, as the surface program's defines (shaders/rounded_outline.glsl)."""
     return {"EL_OUTLINE_EDGE_TEXELS": EDGE_TEXELS, "EL_OUTLINE_EDGES_PER_ROW": EDGES_PER_ROW,
             "EL_OUTLINE_CORNER_TEXELS": CORNER_TEXELS, "EL_OUTLINE_CORNERS_PER_ROW": CORNERS_PER_ROW,
-            "EL_OUTLINE_TRIANGLE_TEXELS": TRIANGLE_TEXELS, "EL_OUTLINE_TRIANGLES_PER_ROW": TRIANGLES_PER_ROW}
+            "EL_OUTLINE_TRIANGLE_TEXELS": TRIANGLE_TEXELS, "EL_OUTLINE_TRIANGLES_PER_ROW": TRIANGLES_PER_ROW,
+            "EL_OUTLINE_EDGES_PER_TRIANGLE": EDGES_PER_TRIANGLE}
 
 
 def convex(e):
@@ -67,6 +69,24 @@ def _segment_distance(points, p0, p1):
     return np.linalg.norm(points - foot, axis=-1)
 
 
+def _segments_distance(a0, a1, b0, b1):
+    """Distance between the segments a0 -> a1 and b0 -> b1 (arrays (..., 3), broadcast; either
+    may be a point): the closest points' parameters clamped to the segments, as in Ericson's
+    Real-Time Collision Detection, 5.1.9."""
+    d1, d2, w = a1 - a0, b1 - b0, a0 - b0
+    a, e = np.einsum("...j,...j->...", d1, d1), np.einsum("...j,...j->...", d2, d2)
+    b, c, f = np.einsum("...j,...j->...", d1, d2), np.einsum("...j,...j->...", d1, w), np.einsum("...j,...j->...", d2, w)
+    tiny = np.finfo(np.float32).tiny
+    denom = a * e - b * b
+    s = np.where(denom > 1e-12 * a * e, np.clip((b * f - c * e) / np.maximum(denom, tiny), 0.0, 1.0), 0.0)
+    t = (b * s + f) / np.maximum(e, tiny)
+    s = np.where(t < 0.0, np.clip(-c / np.maximum(a, tiny), 0.0, 1.0),
+                 np.where(t > 1.0, np.clip((b - c) / np.maximum(a, tiny), 0.0, 1.0), s))
+    t = np.where(e > tiny, np.clip(t, 0.0, 1.0), 0.0)
+    s = np.where(a > tiny, s, 0.0)
+    return np.linalg.norm(a0 + d1 * s[..., None] - b0 - d2 * t[..., None], axis=-1)
+
+
 def _reach(extract, start, rec, normals, p0, p1, reach):
     """(triangle, item) pairs an item's (an edge's or a corner's) strip may cross beyond its own
     faces: the triangles round its vertices `start` (with `rec`, the item), within
@@ -74,7 +94,9 @@ def _reach(extract, start, rec, normals, p0, p1, reach):
     runs on across a patch's facets), and on from their corners within `reach` of the item's
     segment p0 -> p1 (a point for a corner): a quad's other half at an edge's end, the thin
     facets of a triangulated face along it. Walked vertex by vertex, so a mesh whose faces are
-    wider than the reach costs one fan per vertex."""
+    wider than the reach costs one fan per vertex; and within a polygon across each of its
+    diagonals that passes within reach: a long triangle of an n-gon (a cylinder's cap) whose
+    diagonal cuts across a rim's reach though none of its corners lies within it."""
     d = extract.edge_data
     tri_verts = getattr(d, "tri_verts", None) if d is not None else None
     polys = getattr(d, "polygons", None) if d is not None else None
@@ -84,7 +106,8 @@ def _reach(extract, start, rec, normals, p0, p1, reach):
     from .radius_clamp import SMOOTH_FOLD_DEG
     cos_max = np.float32(np.cos(np.radians(SMOOTH_FOLD_DEG)))
     tri_verts = np.asarray(tri_verts, np.int64)
-    tri_normal = np.asarray(polys.normal, np.float32)[np.asarray(polys.tri_poly, np.int64)]
+    tri_poly = np.asarray(polys.tri_poly, np.int64)
+    tri_normal = np.asarray(polys.normal, np.float32)[tri_poly]
     vert_pos = np.zeros((int(tri_verts.max()) + 1, 3), np.float32)  # by vertex, from the corners
     vert_pos[tri_verts.reshape(-1)] = np.asarray(extract.corner_pos, np.float32).reshape(-1, 3)
     tv = tri_verts.reshape(-1)
@@ -93,6 +116,7 @@ def _reach(extract, start, rec, normals, p0, p1, reach):
     unit = (normals / np.maximum(np.linalg.norm(normals, axis=2, keepdims=True), 1e-30)).astype(np.float32)
     p0, p1, reach = p0.astype(np.float32), p1.astype(np.float32), reach.astype(np.float32)
     m = max(len(p0), 1)
+    diagonals = _diagonals(tri_verts, tri_poly)
     front_v, front_r = start[ok], rec[ok]
     seen = np.unique(front_v * m + front_r)
     out_t, out_r = [], []
@@ -103,7 +127,7 @@ def _reach(extract, start, rec, normals, p0, p1, reach):
         t = by_vert[first[front_v][src] + offs] // 3
         r = front_r[src]
         flat = np.abs(np.einsum("nj,nkj->nk", tri_normal[t], unit[r])).max(axis=1) >= cos_max
-        t, r = t[flat], r[flat]
+        t, r = _across_diagonals(t[flat], r[flat], diagonals, vert_pos, p0, p1, reach, m)
         out_t.append(t)
         out_r.append(r)
         # On through the fan's corners within reach, each (corner, item) once.
@@ -116,6 +140,43 @@ def _reach(extract, start, rec, normals, p0, p1, reach):
         seen = np.union1d(seen, key)
         front_v, front_r = key // m, key % m
     return np.concatenate(out_t), np.concatenate(out_r)
+
+
+def _diagonals(tri_verts, tri_poly):
+    """(sides (D,), the vertex pairs of all triangle sides (3T, 2), the triangle across each of
+    `sides`): the sides that two triangles of one polygon share (side k of triangle i is
+    3 i + k), each listed from both of its triangles."""
+    ends = np.stack([tri_verts, np.roll(tri_verts, -1, axis=1)], axis=2).reshape(-1, 2)
+    pair = np.sort(ends, axis=1)
+    key = (pair[:, 0] * (int(tri_verts.max()) + 1) + pair[:, 1]) * (int(tri_poly.max()) + 1) + np.repeat(tri_poly, 3)
+    order = np.argsort(key, kind="stable")
+    k = key[order]
+    twin = np.flatnonzero(k[1:] == k[:-1])
+    a, b = order[twin], order[twin + 1]
+    sides = np.r_[a, b]
+    across = np.r_[b, a] // 3
+    at = np.argsort(sides)
+    return sides[at], ends, across[at]
+
+
+def _across_diagonals(t, r, diagonals, vert_pos, p0, p1, reach, m):
+    """The (triangle, item) pairs t, r and those reached from them across polygon diagonals
+    within each item's reach, repeatedly (one polygon's triangles all lie in its plane)."""
+    sides, ends, across = diagonals
+    pairs = np.unique(t * m + r)
+    front = pairs
+    while len(front) and len(sides):
+        ft, fr = front // m, front % m
+        cand = (3 * ft[:, None] + np.arange(3)).reshape(-1)
+        cr = np.repeat(fr, 3)
+        at = np.minimum(np.searchsorted(sides, cand), len(sides) - 1)
+        inner = sides[at] == cand
+        cand, cr, at = cand[inner], cr[inner], at[inner]
+        near = _segments_distance(vert_pos[ends[cand, 0]], vert_pos[ends[cand, 1]], p0[cr], p1[cr]) < reach[cr]
+        key = np.unique(across[at[near]] * m + cr[near])
+        front = key[~np.isin(key, pairs)]
+        pairs = np.union1d(pairs, front)
+    return pairs // m, pairs % m
 
 
 def _lists(count, pos, rec, dist, per):

@@ -26,20 +26,101 @@ vec4 el_fillet_outline(vec3 na, vec3 nb, vec3 V, out vec3 C)
   return vec4(dot(P, C) < 0.0 ? -P : P, 1.0);
 }
 
-/* For each of triangle `tri`'s listed edges, at this vertex (clip position `clip`): `dist`, its
- * signed distance in pixels from the edge's image line (positive on its faces' side), `along`,
- * where its foot lies on the edge's image (0 and 1: the ends; both affine on screen, so
- * interpolated without perspective they are exact at every pixel), the strip's width in pixels
- * at the edge's two ends (returned: at p0, `strip1`: at p1; 0 where the edge is no silhouette
- * there), which a pixel takes at its foot, and the edge's image length in pixels (`length_px`,
- * the same at all three vertices). Past an end the strip ends in a half disc of its width
- * there, or of the edge's image length where that is shorter (surface.frag): where the outline
- * turns away from the part's inside between two strips (a rim seen from above), their ends
- * leave a wedge that the moved outline, round there as the fillets' is, still passes inside.
- * Judged at the edge's own ends, the strip is the same on both its faces and the triangle's
- * three vertices agree on it. A polygon's other triangles meet the line beyond the edge too (a
- * gear's face round its teeth): the strip runs along the edge alone, and its ends' half discs
- * reach no farther than its width. */
+/* Rounded edge `e`'s strip seen from pixel position `s` (pixels): returns its width in pixels at
+ * the edge's end p0 (0 where the edge is no silhouette there; -1 where it has no strip at all),
+ * and `strip1` at p1; `dist`, the signed distance in pixels of s from the edge's image line
+ * (positive on its faces' side), `along`, where its foot lies on the edge's image (0 and 1: the
+ * ends), and `length_px`, the edge's image length in pixels. dist and along are affine on
+ * screen: interpolated without perspective from a triangle's vertices, they are exact at every
+ * pixel. A pixel takes the strip's width at its foot; past an end the strip ends in a half disc
+ * of its width there, or of the edge's image length where that is shorter (el_in_strip): where
+ * the outline turns away from the part's inside between two strips (a rim seen from above),
+ * their ends leave a wedge that the moved outline, round there as the fillets' is, still passes
+ * inside. Judged at the edge's own ends, the strip is the same on both its faces and at every
+ * vertex of a triangle. A polygon's other triangles meet the line beyond the edge too (a gear's
+ * face round its teeth): the strip runs along the edge alone, and its ends' half discs reach no
+ * farther than its width. `nm`: el_normal_matrix(model). */
+float el_outline_strip(int e, vec2 s, mat3 nm, out float dist, out float along_t, out float strip1, out float length_px)
+{
+  dist = 0.0;
+  along_t = 0.0;
+  strip1 = 0.0;
+  length_px = 0.0;
+  bool persp = frame.eye.w > 0.5;
+  ivec2 at = ivec2((e % EL_OUTLINE_EDGES_PER_ROW) * EL_OUTLINE_EDGE_TEXELS, e / EL_OUTLINE_EDGES_PER_ROW);
+  vec4 t0 = texelFetch(outline_edges, at, 0);
+  vec3 ma = t0.xyz, mb = texelFetch(outline_edges, at + ivec2(1, 0), 0).xyz;
+  vec3 o0 = texelFetch(outline_edges, at + ivec2(2, 0), 0).xyz, o1 = texelFetch(outline_edges, at + ivec2(3, 0), 0).xyz;
+  float scale = el_radius_scale(model, ma, mb, o1 - o0); /* as the edge pass scales its radius */
+  vec3 na = normalize(nm * ma), nb = normalize(nm * mb);
+  vec3 w0 = (model * vec4(o0, 1.0)).xyz, w1 = (model * vec4(o1, 1.0)).xyz;
+  vec3 ta = texelFetch(outline_edges, at + ivec2(4, 0), 0).xyz, tb = texelFetch(outline_edges, at + ivec2(5, 0), 0).xyz;
+  vec2 width = vec2(0.0);
+  for (int end = 0; end < 2; end++) {
+    /* Each end with the normals its faces are shaded with there, the vertex's own: the edges
+     * that meet at a vertex agree on whether it lies on a silhouette, so a strip narrows to
+     * nothing where its neighbour's does, and its end's half disc reaches no farther. */
+    float half_turn = end == 0 ? -0.5 : 0.5;
+    vec3 ea = normalize(nm * (ma + half_turn * ta)), eb = normalize(nm * (mb + half_turn * tb));
+    vec3 to_eye = persp ? frame.eye.xyz - (end == 0 ? w0 : w1) : -frame.view_dir.xyz;
+    vec3 C;
+    vec4 P = el_fillet_outline(ea, eb, normalize(to_eye), C);
+    if (P.w > 0.0) {
+      float px_per_world = frame.camera.x / (persp ? max(length(to_eye), 1e-30) : 1.0);
+      width[end] = t0.w * scale * max(dot(P.xyz, C) - 1.0, 0.0) * px_per_world;
+    }
+  }
+  if (!(max(width.x, width.y) > 0.0)) {
+    return -1.0; /* both faces on one side of the eye at both ends: no silhouette */
+  }
+  vec4 c0 = frame.projection * (frame.view * vec4(w0, 1.0));
+  vec4 c1 = frame.projection * (frame.view * vec4(w1, 1.0));
+  vec2 s0 = (c0.xy / c0.w * 0.5 + 0.5) * frame.viewport.xy;
+  vec2 along = (c1.xy / c1.w * 0.5 + 0.5) * frame.viewport.xy - s0;
+  float l = length(along);
+  if (!(c0.w > 0.0) || !(c1.w > 0.0) || !(l > 1e-6)) {
+    return -1.0; /* behind the eye, or seen end-on: its strip is a point */
+  }
+  /* Signed towards where the faces lie: at a silhouette both lie on one side of the line, and
+   * the strip lies there; on the other side, another face may show (a bore's wall turning
+   * towards the eye past the end of its rim's silhouette). Judged at the wider end, from a
+   * step into face a square to the edge. */
+  vec3 wide_end = width.x >= width.y ? w0 : w1;
+  vec3 into_a = -(nb - dot(nb, na) * na);
+  vec4 cs = frame.projection * (frame.view * vec4(wide_end, 1.0));
+  vec4 ca = frame.projection * (frame.view * vec4(wide_end + into_a * (0.1 * length(w1 - w0) / max(length(into_a), 1e-30)), 1.0));
+  vec2 step_a = (ca.xy / ca.w - cs.xy / cs.w) * 0.5 * frame.viewport.xy;
+  float faces_side = along.x * step_a.y - along.y * step_a.x < 0.0 ? -1.0 : 1.0;
+  dist = faces_side * (along.x * (s.y - s0.y) - along.y * (s.x - s0.x)) / l;
+  along_t = dot(s - s0, along) / (l * l);
+  length_px = l;
+  strip1 = width.y;
+  return width.x;
+}
+
+/* Whether a pixel with these values of el_outline_strip lies in the strip (or its ends' half
+ * discs), where the fillet's outline has moved in past it. */
+bool el_in_strip(float strip0, float strip1, float along_t, float length_px, float dist)
+{
+  float strip = mix(strip0, strip1, clamp(along_t, 0.0, 1.0));
+  float past = max(max(-along_t, along_t - 1.0), 0.0) * length_px; /* past its end */
+  /* Past its end a half disc, of no more than the edge's image length: where a rim's image
+   * turns tightly its edges are shorter than the strip is wide, and a wider disc reaches past
+   * the next edges, whose strips narrow. */
+  float reach = past > 0.0 ? min(strip, length_px) : strip;
+  return strip > 0.0 && dist >= 0.0 && dist * dist + past * past < reach * reach;
+}
+
+/* The list of rounded edges `texel` (0 .. EL_OUTLINE_EDGES_PER_TRIANGLE / 4 - 1) of triangle
+ * `tri`: up to four edge numbers plus one (0: none). */
+vec4 el_outline_edge_list(int tri, int texel)
+{
+  return texelFetch(outline_triangles, ivec2((tri % EL_OUTLINE_TRIANGLES_PER_ROW) * EL_OUTLINE_TRIANGLE_TEXELS + texel, tri / EL_OUTLINE_TRIANGLES_PER_ROW), 0);
+}
+
+/* For the first four of triangle `tri`'s listed edges, at this vertex (clip position `clip`),
+ * el_outline_strip's values (the strip at p0 returned), to be interpolated without perspective:
+ * a triangle's first four edges (its own sides and the nearest) cost the vertex shader only. */
 vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out vec4 strip1, out vec4 length_px)
 {
   dist = vec4(0.0);
@@ -50,66 +131,49 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
   if (!(clip.w > 0.0)) {
     return strip0;
   }
-  bool persp = frame.eye.w > 0.5;
   mat3 nm = el_normal_matrix(model);
   vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy;
-  vec4 list = texelFetch(outline_triangles, ivec2((tri % EL_OUTLINE_TRIANGLES_PER_ROW) * EL_OUTLINE_TRIANGLE_TEXELS, tri / EL_OUTLINE_TRIANGLES_PER_ROW), 0);
+  vec4 list = el_outline_edge_list(tri, 0);
   for (int k = 0; k < 4; k++) {
     int e = int(list[k] + 0.5) - 1;
     if (e < 0) {
       continue;
     }
-    ivec2 at = ivec2((e % EL_OUTLINE_EDGES_PER_ROW) * EL_OUTLINE_EDGE_TEXELS, e / EL_OUTLINE_EDGES_PER_ROW);
-    vec4 t0 = texelFetch(outline_edges, at, 0);
-    vec3 ma = t0.xyz, mb = texelFetch(outline_edges, at + ivec2(1, 0), 0).xyz;
-    vec3 o0 = texelFetch(outline_edges, at + ivec2(2, 0), 0).xyz, o1 = texelFetch(outline_edges, at + ivec2(3, 0), 0).xyz;
-    float scale = el_radius_scale(model, ma, mb, o1 - o0); /* as the edge pass scales its radius */
-    vec3 na = normalize(nm * ma), nb = normalize(nm * mb);
-    vec3 w0 = (model * vec4(o0, 1.0)).xyz, w1 = (model * vec4(o1, 1.0)).xyz;
-    vec3 ta = texelFetch(outline_edges, at + ivec2(4, 0), 0).xyz, tb = texelFetch(outline_edges, at + ivec2(5, 0), 0).xyz;
-    vec2 width = vec2(0.0);
-    for (int end = 0; end < 2; end++) {
-      /* Each end with the normals its faces are shaded with there, the vertex's own: the edges
-       * that meet at a vertex agree on whether it lies on a silhouette, so a strip narrows to
-       * nothing where its neighbour's does, and its end's half disc reaches no farther. */
-      float half_turn = end == 0 ? -0.5 : 0.5;
-      vec3 ea = normalize(nm * (ma + half_turn * ta)), eb = normalize(nm * (mb + half_turn * tb));
-      vec3 to_eye = persp ? frame.eye.xyz - (end == 0 ? w0 : w1) : -frame.view_dir.xyz;
-      vec3 C;
-      vec4 P = el_fillet_outline(ea, eb, normalize(to_eye), C);
-      if (P.w > 0.0) {
-        float px_per_world = frame.camera.x / (persp ? max(length(to_eye), 1e-30) : 1.0);
-        width[end] = t0.w * scale * max(dot(P.xyz, C) - 1.0, 0.0) * px_per_world;
-      }
+    float d, a, w1, l;
+    float w0 = el_outline_strip(e, s, nm, d, a, w1, l);
+    if (w0 < 0.0) {
+      continue;
     }
-    if (!(max(width.x, width.y) > 0.0)) {
-      continue; /* both faces on one side of the eye at both ends: no silhouette */
-    }
-    vec4 c0 = frame.projection * (frame.view * vec4(w0, 1.0));
-    vec4 c1 = frame.projection * (frame.view * vec4(w1, 1.0));
-    vec2 s0 = (c0.xy / c0.w * 0.5 + 0.5) * frame.viewport.xy;
-    vec2 along = (c1.xy / c1.w * 0.5 + 0.5) * frame.viewport.xy - s0;
-    float l = length(along);
-    if (!(c0.w > 0.0) || !(c1.w > 0.0) || !(l > 1e-6)) {
-      continue; /* behind the eye, or seen end-on: its strip is a point */
-    }
-    /* Signed towards where the faces lie: at a silhouette both lie on one side of the line, and
-     * the strip lies there; on the other side, another face may show (a bore's wall turning
-     * towards the eye past the end of its rim's silhouette). Judged at the wider end, from a
-     * step into face a square to the edge. */
-    vec3 wide_end = width.x >= width.y ? w0 : w1;
-    vec3 into_a = -(nb - dot(nb, na) * na);
-    vec4 cs = frame.projection * (frame.view * vec4(wide_end, 1.0));
-    vec4 ca = frame.projection * (frame.view * vec4(wide_end + into_a * (0.1 * length(w1 - w0) / max(length(into_a), 1e-30)), 1.0));
-    vec2 step_a = (ca.xy / ca.w - cs.xy / cs.w) * 0.5 * frame.viewport.xy;
-    float faces_side = along.x * step_a.y - along.y * step_a.x < 0.0 ? -1.0 : 1.0;
-    dist[k] = faces_side * (along.x * (s.y - s0.y) - along.y * (s.x - s0.x)) / l;
-    along_t[k] = dot(s - s0, along) / (l * l);
+    dist[k] = d;
+    along_t[k] = a;
+    strip1[k] = w1;
     length_px[k] = l;
-    strip0[k] = width.x;
-    strip1[k] = width.y;
+    strip0[k] = w0;
   }
   return strip0;
+}
+
+/* Whether pixel `s` (pixels) of triangle `tri` lies in the strip of one of its listed edges past
+ * the first four, each judged in the fragment shader: a sliver of an n-gon's fan (a cylinder's
+ * cap) lies in the reach of five or six rims' strips, and only such triangles list more. */
+bool el_in_more_strips(int tri, vec2 s)
+{
+  mat3 nm = el_normal_matrix(model);
+  for (int texel = 1; texel < EL_OUTLINE_EDGES_PER_TRIANGLE / 4; texel++) {
+    vec4 list = el_outline_edge_list(tri, texel);
+    for (int k = 0; k < 4; k++) {
+      int e = int(list[k] + 0.5) - 1;
+      if (e < 0) {
+        return false; /* the list is packed: nothing follows */
+      }
+      float d, a, w1, l;
+      float w0 = el_outline_strip(e, s, nm, d, a, w1, l);
+      if (w0 >= 0.0 && el_in_strip(w0, w1, a, l, d)) {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 /* For each of triangle `tri`'s listed corner patches where exactly two of its three edges are
@@ -129,7 +193,8 @@ vec4 el_outline_corners(int tri, vec4 clip, out vec4 zone0, out vec4 zone1, out 
     return ball;
   }
   vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewport.xy;
-  vec4 list = texelFetch(outline_triangles, ivec2((tri % EL_OUTLINE_TRIANGLES_PER_ROW) * EL_OUTLINE_TRIANGLE_TEXELS + 1, tri / EL_OUTLINE_TRIANGLES_PER_ROW), 0);
+  /* The corners' list follows the edges'. */
+  vec4 list = el_outline_edge_list(tri, EL_OUTLINE_EDGES_PER_TRIANGLE / 4);
   mat3 nm = el_normal_matrix(model);
   bool persp = frame.eye.w > 0.5;
   for (int q = 0; q < 4; q++) {

@@ -12,15 +12,12 @@ void main()
   /* The strips a rounded silhouette leaves out, and past a corner the ball's circle
    * (rounded_outline.glsl). */
   for (int k = 0; k < 4; k++) {
-    float strip = mix(outline_strip0[k], outline_strip1[k], clamp(outline_along[k], 0.0, 1.0));
-    float past = max(max(-outline_along[k], outline_along[k] - 1.0), 0.0) * outline_length[k]; /* past its end */
-    /* Past its end a half disc, of no more than the edge's image length: where a rim's image
-     * turns tightly its edges are shorter than the strip is wide, and a wider disc reaches past
-     * the next edges, whose strips narrow. */
-    float reach = past > 0.0 ? min(strip, outline_length[k]) : strip;
-    if (strip > 0.0 && outline_dist[k] >= 0.0 && outline_dist[k] * outline_dist[k] + past * past < reach * reach) {
+    if (el_in_strip(outline_strip0[k], outline_strip1[k], outline_along[k], outline_length[k], outline_dist[k])) {
       discard;
     }
+  }
+  if (el_in_more_strips(int(surface_tri + 0.5), gl_FragCoord.xy)) {
+    discard;
   }
   for (int q = 0; q < 4; q++) {
     vec4 z = q == 0 ? outline_corner0 : (q == 1 ? outline_corner1 : (q == 2 ? outline_corner2 : outline_corner3));

@@ -2,7 +2,8 @@
 (addon/rounded_outline.py), on meshes small enough to know the answer: a box (each half of a
 face lists its own sides first, then its quad's other two, which touch its corners), a box whose
 faces are grids of quads (the strip's triangles reach across the facets along an edge, as far as
-the fillet's setback, and no farther), an L-shaped prism (its concave edge is listed nowhere: a concave fillet moves no
+the fillet's setback, and no farther), a cylinder whose cap's long triangles cut across its rims'
+reach, an L-shaped prism (its concave edge is listed nowhere: a concave fillet moves no
 outline in), and a box with unrounded edges (nothing to list)."""
 import types
 import unittest
@@ -55,6 +56,30 @@ def grid_box(n):
                         quad.append(vert(p))
                     polys_list.append(quad if (side == 1.0) == (axis != 1) else quad[::-1])
     return mesh(verts, polys_list)
+
+
+def cylinder(n=32):
+    """A cylinder of radius 0.5 and height 1 with n sides, its top cap triangulated as a zigzag
+    (as Blender's polyfill does, with chords spanning several rim segments) and the rest as fans;
+    and the top cap's triangles."""
+    ring = [(0.5 * np.cos(2 * np.pi * k / n), 0.5 * np.sin(2 * np.pi * k / n)) for k in range(n)]
+    verts = [(x, y, 0.0) for x, y in ring] + [(x, y, 1.0) for x, y in ring]
+    top = list(range(n, 2 * n))
+    polys_list = [top, list(range(n))[::-1]] + [[k, (k + 1) % n, n + (k + 1) % n, n + k] for k in range(n)]
+    positions, edges, polys, tris = mesh(verts, polys_list)
+    zigzag, lo, hi = [], 0, n - 1
+    while hi - lo > 1:
+        if len(zigzag) % 2 == 0:
+            zigzag.append((top[lo], top[lo + 1], top[hi]))
+            lo += 1
+        else:
+            zigzag.append((top[lo], top[hi - 1], top[hi]))
+            hi -= 1
+    tris[:n - 2] = zigzag
+    return positions, edges, polys, tris, np.arange(n - 2)
+
+
+R_CAP = 0.06
 
 
 def box_edges(positions, edges):
@@ -113,6 +138,33 @@ class RoundedOutline(unittest.TestCase):
                 self.assertFalse(lists_it, f"triangle {t} at y >= {y}")
             else:
                 self.assertTrue(lists_it, f"triangle {t} at y >= {y}")
+
+    def test_a_cap_lists_every_rim_whose_reach_its_triangles_cross(self):
+        """A 32-sided cylinder's rims rounded at r = 0.06 (its setback r at 90 degrees, under
+        the rim's segment length, 0.098): a cap triangle lists a rim edge exactly where it comes
+        within r of it (measured on points 1/400 of a side apart; up to eight rims). Its long triangles' chords
+        cut across the reach of rim edges none of whose vertices they touch; walked only
+        through corners within reach, those were missed, and the cap's silhouette kept sharp
+        pieces of its outline."""
+        positions, edges, polys, tris, cap = cylinder()
+        rim = np.array([positions[a, 2] == positions[b, 2] for a, b in edges])
+        ex, sel = extract_of(positions, edges, polys, tris, rim, radius=R_CAP)
+        recs, _, lists = rounded_outline.records(ex)
+        t = np.linspace(0.0, 1.0, 401)[:, None]
+        u = np.linspace(0.0, 1.0, 101)[:, None]  # a rim edge is a tenth of a cap's side long
+        along = (recs[:, None, 2, :3] + u[None] * (recs[:, None, 3, :3] - recs[:, None, 2, :3])).reshape(-1, 3)
+        misses = extras = 0
+        for c in cap:
+            corners = positions[tris[c]]
+            sides = np.concatenate([a + t * (b - a) for a, b in zip(corners, np.roll(corners, -1, axis=0))])
+            # Each rim edge's distance from the triangle's sides (both lie in the cap's plane).
+            d = np.sqrt(((sides[:, None, :2] - along[None, :, :2]) ** 2).sum(axis=2)).min(axis=0).reshape(len(recs), -1)
+            d = d.min(axis=1) + np.abs(recs[:, 2, 2] - 1.0)  # the bottom rim lies 1 below
+            got = listed([lists[0][c]])[0]
+            self.assertLessEqual(int(np.sum(d < R_CAP + 0.003)), rounded_outline.EDGES_PER_TRIANGLE, f"triangle {c}")
+            misses += sum(1 for k in np.flatnonzero(d < R_CAP - 0.003) if k not in got)
+            extras += sum(1 for k in np.flatnonzero(d > R_CAP + 0.003) if k in got)
+        self.assertEqual((misses, extras), (0, 0))
 
     def test_corner_zone_reaches_across_facets(self):
         """The grid box (cells 0.25), its box edges rounded at r = 0.3: each corner's zone reaches

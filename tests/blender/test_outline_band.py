@@ -205,11 +205,55 @@ class StripEnds(unittest.TestCase):
         lost = np.clip(ref - flange_coverage(8.0, False), 0.0, None)
         window = sum(np.roll(np.roll(lost, dy, 0), dx, 1) for dy in (-1, 0, 1) for dx in (-1, 0, 1))
         print(f"coverage lost against the fillets: {lost.sum():.1f} pixels, {window.max():.2f} in the worst 3 x 3")
-        # Measured: 30.4 pixels, 4.0 in the worst 3 x 3; 58.7 and 8.0 with discs of the strip's
-        # full width.
+        # Measured: 39.2 pixels, 5.75 in the worst 3 x 3 (30.4 and 4.0 when a triangle listed
+        # four strips at most, and left a bolt hole's farther ones out); 58.7 and 8.0 with discs
+        # of the strip's full width.
         self.assertGreater(ref.sum(), 10000.0, "the flange is in view")
         self.assertLess(lost.sum(), 45.0)
         self.assertLess(window.max(), 6.0)
+
+
+def cylinder_coverage(width_px, fillet):
+    """A 32-sided cylinder as Blender's Cylinder is made (n-gon caps, which Blender triangulates
+    into long slivers), its rims rounded at width_px pixels, seen from above on a transparent
+    film: its alpha, with the exactly circular fillets (highlights off) or with EdgeLight's."""
+    import bmesh
+    camera = np.array((2.2, -3.0, 2.6))
+    helpers.empty_scene(*RESOLUTION, samples=64 if fillet else 8)
+    helpers.add_camera(tuple(camera))
+    helpers.add_sun((0.5, -0.8, 0.6), 4.0)
+    scene = bpy.context.scene
+    scene.render.film_transparent = True
+    bm = bmesh.new()
+    bmesh.ops.create_cone(bm, cap_ends=True, segments=32, radius1=0.5, radius2=0.5, depth=1.0)
+    me = bpy.data.meshes.new("Cylinder")
+    bm.to_mesh(me)
+    bm.free()
+    scene.collection.objects.link(bpy.data.objects.new("Cylinder", me))
+    zoo.smooth_with_sharp_creases(me)
+    mat = zoo.material("CylinderMaterial", (0.8, 0.8, 0.8))
+    mat.edgelight.radius = zoo.radius_at_width(width_px, camera, RESOLUTION[0])
+    me.materials.append(mat)
+    if fillet:
+        fillets.add_fillets(scene, mat.edgelight.radius, 32, exact=True)
+    scene.edgelight.highlights = not fillet
+    return np.asarray(helpers.render()["pixels"])[..., 3].astype(np.float64)
+
+
+class NgonCap(unittest.TestCase):
+    def test_a_caps_slivers_leave_their_far_rims_strips(self):
+        """The cap's triangles are slivers whose chords cut across the reach of rims none of
+        their corners touches, and each lies in the reach of up to eight rims: listed four at a
+        time, walked by corners alone, the far rim's silhouette kept blocks of the cap above the
+        fillets' outline. Coverage past the fillets', summed."""
+        for width, bound in ((4.0, 40.0), (8.0, 120.0)):
+            ref = cylinder_coverage(width, True)
+            past = np.clip(cylinder_coverage(width, False) - ref, 0.0, None)
+            print(f"{width} px: coverage past the fillets' {past.sum():.1f} pixels")
+            # Measured: 26.8 and 83.3 pixels; 69.4 and 191.5 with four rims a triangle, walked
+            # by corners alone.
+            self.assertGreater(ref.sum(), 5000.0, "the cylinder is in view")
+            self.assertLess(past.sum(), bound, f"{width} px")
 
 
 if __name__ == "__main__":

@@ -25,11 +25,12 @@ TEST_F(ShaderAssembly, EveryProgramCompilesAndLinks) {
 TEST_F(ShaderAssembly, RoundedOutlineVariantCompilesAndLinks) {
     const std::vector<std::pair<std::string, std::string>> defines = {
         {"EL_ROUNDED_OUTLINE", "1"},
-        {"EL_OUTLINE_EDGE_TEXELS", "4"},
+        {"EL_OUTLINE_EDGE_TEXELS", "6"},
         {"EL_OUTLINE_EDGES_PER_ROW", "1024"},
         {"EL_OUTLINE_CORNER_TEXELS", "5"},
         {"EL_OUTLINE_CORNERS_PER_ROW", "1024"},
-        {"EL_OUTLINE_TRIANGLE_TEXELS", "2"},
+        {"EL_OUTLINE_TRIANGLE_TEXELS", "3"},
+        {"EL_OUTLINE_EDGES_PER_TRIANGLE", "8"},
         {"EL_OUTLINE_TRIANGLES_PER_ROW", "2048"},
     };
     const auto p = el_tools::assemble_program(EDGELIGHT_SHADER_DIR, "surface", defines);
