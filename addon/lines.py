@@ -199,8 +199,7 @@ def view_lines(extract, index, matrix, camera, settings, counters=None, rounded=
         selected[edges] = True
         seg = _edge_segments(d, extract.native, selected, settings.style("silhouette").taper > 0.0)
         if rounded and extract.edges:
-            seg.p0, seg.p1 = outline_lines.on_rounded_outline(extract, d.edges[np.flatnonzero(selected)], seg.p0,
-                                                              seg.p1, matrix, camera)
+            seg = outline_lines.on_rounded_outline(extract, d.edges[np.flatnonzero(selected)], seg, matrix, camera)
         out["silhouette"] = seg
     if "contour" in kinds:
         pts, tris = views.contours()

@@ -6,10 +6,17 @@ point: r from the fillet's axis along P = (Na x Nb) x V / |...|, turned towards 
 which lies r C from the axis. That is a move of -r (C - P) in world space, judged with the
 normals and the radius the strip is (zero where the end is no silhouette, as the strip's width
 is), so the stroke's centre lies on the strip's inner side. No bpy: plain-Python tests import it."""
+import dataclasses
+
 import numpy as np
 
 from . import rounded_outline
-from .radius_scale import radius_scale
+from .radius_scale import ball_scale, radius_scale
+
+# A corner's arc: only where the two lines' crossing lies farther than this many pixels
+# outside the ball's circle, and then in chords that stay this close to the circle.
+ARC_TOLERANCE_PX = 0.25
+ARC_MAX_PIECES = 8
 
 
 def _keys(pairs, count):
@@ -29,6 +36,17 @@ def rounded_records(extract):
         keys = _keys(verts, len(extract.edge_data.positions))
         order = np.argsort(keys)
         cached = extract._outline_records = (keys[order], recs[order])
+    return cached
+
+
+def corner_records(extract):
+    """(sorted vertices, records) of the mesh's convex corner patches (rounded_outline._corners:
+    ball centre and radius, vertex, three sectors' normals), found once per extraction."""
+    cached = getattr(extract, "_outline_corners", None)
+    if cached is None:
+        recs, verts = rounded_outline._corners(extract)
+        order = np.argsort(verts, kind="stable")
+        cached = extract._outline_corners = (np.asarray(verts, np.int64)[order], recs[order])
     return cached
 
 
@@ -92,40 +110,73 @@ def _unit(a):
     return a / np.maximum(np.linalg.norm(a, axis=1, keepdims=True), 1e-30)
 
 
-def on_rounded_outline(extract, edge_pairs, p0, p1, matrix, camera):
-    """The ends p0, p1 (object space) of silhouette segments along the mesh edges `edge_pairs`
-    (vertex pairs, p0's vertex first), those on convex rounded edges moved onto their fillets'
-    outline: new arrays, the others' ends unchanged."""
+def on_rounded_outline(extract, edge_pairs, seg, matrix, camera):
+    """`seg` (lines.LineSegments, object space) of silhouettes along the mesh edges `edge_pairs`
+    (vertex pairs, p0's vertex first), with those on convex rounded edges moved onto their
+    fillets' outline, their corners joined (round a corner patch's ball, by an arc of its
+    circle appended as segments of their own), and the unmoved ones they run on into meeting
+    them: a new LineSegments."""
     at = records_of(extract, edge_pairs)
     hit = np.flatnonzero(at >= 0)
     if not len(hit):
-        return p0, p1
+        return seg
     _, recs = rounded_records(extract)
     rec = recs[at[hit]]
     moves = outline_moves(rec, matrix, camera)
-    p0, p1 = np.array(p0, np.float32), np.array(p1, np.float32)
+    p0, p1 = np.array(seg.p0, np.float32), np.array(seg.p1, np.float32)
     d = p1[hit] - p0[hit]
     # The record runs as the segment does: both take their ends from the mesh's edge array.
     p0[hit] += moves[0].astype(np.float32)
     p1[hit] += moves[1].astype(np.float32)
+    pairs = np.asarray(edge_pairs, np.int64)
     clip = np.asarray(camera.projection, np.float64) @ np.asarray(camera.view, np.float64) @ np.asarray(matrix, np.float64)
-    _join_corners(np.asarray(edge_pairs, np.int64)[hit], hit, d, p0, p1, clip)
-    return p0, p1
+    e1, e2 = _two_ends(pairs[hit])  # end k of moved segment j: 2 j + k
+    arcs = _corner_arcs(extract, pairs[hit], rec, e1, e2, matrix, camera)
+    round_ = np.zeros(len(e1), bool) if arcs is None else arcs[0]
+    _join_corners(e1[~round_], e2[~round_], hit, d, p0, p1, clip)
+    moved = np.zeros((len(pairs), 2), bool)
+    moved[hit] = np.any(moves != 0.0, axis=2).T
+    _meet_unmoved(pairs, moved.reshape(-1), p0, p1)
+    out = dataclasses.replace(seg, p0=p0, p1=p1)
+    return out if arcs is None else _with_arcs(out, hit, e1[round_], e2[round_], *arcs[1:])
 
 
-def _join_corners(pairs, hit, d, p0, p1, clip):
-    """Where two moved silhouette segments meet at a vertex (a box's corner seen from outside),
-    each was moved square to its own edge, and their ends overshoot each other: both end at one
-    point where their images cross, on the first one's line (so neither image tilts, and the
-    SVG output's polylines still join there); along a smooth rim, where the two nearly continue
-    each other, at the mean of their two ends. `clip`: object space -> clip space (4 x 4)."""
-    verts = pairs.reshape(-1)                               # end k of segment i: 2 i + k
+def _two_ends(pairs):
+    """(e1, e2): the segment ends (2 i + k: end k of segment i) at the vertices where exactly
+    two ends of `pairs` meet, in pairs."""
+    verts = pairs.reshape(-1)
     order = np.argsort(verts, kind="stable")
     v = verts[order]
     first = np.flatnonzero((v[:-1] == v[1:]) & np.r_[True, v[1:-1] != v[:-2]] & np.r_[v[2:] != v[1:-1], True])
-    if not len(first):
+    return order[first], order[first + 1]
+
+
+def _meet_unmoved(pairs, moved, p0, p1):
+    """Where a silhouette that moved onto a fillet's outline runs on into one that did not (a
+    rounded rim's silhouette into the sharp or smooth side of a cylinder below it), the unmoved
+    segment's end moves to the moved one's: the side's outline ends where the fillet's begins,
+    and the ink stays one stroke instead of stepping by the strip's width. `moved`: per end
+    (2 i + k), whether it moved."""
+    if not len(pairs):
         return
-    e1, e2 = order[first], order[first + 1]
+    e1, e2 = _two_ends(pairs)
+    one = moved[e1] != moved[e2]
+    src, dst = np.where(moved[e1], e1, e2)[one], np.where(moved[e1], e2, e1)[one]
+    ends = np.stack([p0, p1], axis=1).reshape(-1, 3)
+    for k, out in ((0, p0), (1, p1)):
+        sel = dst % 2 == k
+        out[dst[sel] // 2] = ends[src[sel]]
+
+
+def _join_corners(e1, e2, hit, d, p0, p1, clip):
+    """Where two moved silhouette segments meet at a vertex (ends e1, e2: end k of moved segment
+    j is 2 j + k) and no ball rounds it, each was moved square to its own edge, and their ends
+    overshoot each other: both end at one point where their images cross, on the first one's
+    line (so neither image tilts, and the SVG output's polylines still join there); along a
+    smooth rim, where the two nearly continue each other, at the mean of their two ends.
+    `clip`: object space -> clip space (4 x 4)."""
+    if not len(e1):
+        return
 
     def point(e):
         i = hit[e // 2]
@@ -154,6 +205,130 @@ def _join_corners(pairs, hit, d, p0, p1, clip):
         for k, ends in ((0, p0), (1, p1)):
             sel = e % 2 == k
             ends[hit[e[sel] // 2]] = joint[sel]
+
+
+def _corner_arcs(extract, pairs, rec, e1, e2, matrix, camera):
+    """Where two moved segments meet at a vertex with a corner patch, the fillets' outline there
+    is the patch ball's circle (docs/lines.md, "Corners"): each segment ends where its fillet
+    meets the ball, at B + rb P (B the ball's centre, rb its radius, P the segment's outline
+    direction, seen from B), and an arc of the circle joins the two. None where no pair is
+    rounded; else (per pair: rounded; for the rounded ones, object space: the two ends T1, T2,
+    the arc's points (rounded, ARC_MAX_PIECES + 1, 3), its pieces)."""
+    cverts, crecs = corner_records(extract)
+    m = np.asarray(matrix, np.float64)
+    lin = m[:3, :3]
+    if not len(cverts) or not len(e1) or not abs(np.linalg.det(lin)) > 1e-30:
+        return None
+    vert = pairs.reshape(-1)[e1]
+    at = np.minimum(np.searchsorted(cverts, vert), len(cverts) - 1)
+    idx = np.flatnonzero(cverts[at] == vert)
+    # The circle's image at most: the ball's radius under the transform's largest stretch, seen
+    # at its centre's distance. Only pairs whose circle may reach a pixel go on.
+    world_clip = np.asarray(camera.projection, np.float64) @ np.asarray(camera.view, np.float64)
+    right = _unit(np.asarray(camera.view, np.float64)[None, 0, :3])[0]  # a scaled camera's too
+    size = np.array([camera.width, camera.height], np.float64) * 0.5
+
+    def radius_px(centre, r):
+        wc = np.c_[centre, np.ones(len(centre))] @ world_clip.T
+        wt = np.c_[centre + r[:, None] * right, np.ones(len(centre))] @ world_clip.T
+        with np.errstate(divide="ignore", invalid="ignore"):
+            px = np.linalg.norm((wt[:, :2] / wt[:, 3:4] - wc[:, :2] / wc[:, 3:4]) * size, axis=1)
+        return np.where((wc[:, 3] > 0.0) & (wt[:, 3] > 0.0) & np.isfinite(px), px, 0.0)
+
+    ball = crecs[at[idx]].astype(np.float64)
+    centre = ball[:, 0, :3] @ lin.T + m[:3, 3]
+    idx, ball, centre = (a[radius_px(centre, ball[:, 0, 3] * np.linalg.norm(lin, 2)) >= ARC_TOLERANCE_PX]
+                         for a in (idx, ball, centre))
+    if not len(idx):
+        return None
+    inv = np.linalg.inv(lin)
+    rb = ball[:, 0, 3] * ball_scale(m, ball[:, 2, :3], ball[:, 3, :3], ball[:, 4, :3])
+    v = np.broadcast_to(-np.asarray(camera.view_dir, np.float64), centre.shape) if camera.orthographic \
+        else np.asarray(camera.eye, np.float64) - centre
+    v = _unit(v)
+    outs = []
+    for e in (e1[idx], e2[idx]):
+        r = rec[e // 2].astype(np.float64)
+        half = np.where(e % 2 == 0, -0.5, 0.5)[:, None]
+        ea = _unit((r[:, 0, :3] + half * r[:, 4, :3]) @ inv)
+        eb = _unit((r[:, 1, :3] + half * r[:, 5, :3]) @ inv)
+        outs.append(fillet_outline(ea, eb, v))
+    (q1, _, s1), (q2, _, s2) = outs
+    # The outline turns by the arc's angle there; the lines' crossing lies R (1 / cos(angle / 2)
+    # - 1) outside a circle of R pixels. An arc where that is past the tolerance, in pieces whose
+    # chords stay within it of the circle.
+    px = radius_px(centre, rb)
+    angle = np.arccos(np.clip(_dot(q1, q2), -1.0, 1.0))
+    step = 2.0 * np.arccos(np.clip(1.0 - ARC_TOLERANCE_PX / np.maximum(px, 1e-9), -1.0, 1.0))
+    pieces = np.clip(np.ceil(angle / np.maximum(step, 1e-9)), 1, ARC_MAX_PIECES).astype(np.int64)
+    overshoot = px * (1.0 / np.maximum(np.cos(0.5 * angle), 1e-9) - 1.0)
+    ok = s1 & s2 & (overshoot > ARC_TOLERANCE_PX) & (angle < np.radians(179.0))
+    if not ok.any():
+        return None
+    idx, centre, rb, q1, q2, angle, pieces = (a[ok] for a in (idx, centre, rb, q1, q2, angle, pieces))
+    t = np.arange(ARC_MAX_PIECES + 1)[None, :] / pieces[:, None]
+    sin_a = np.maximum(np.sin(angle), 1e-9)[:, None]
+    w1 = np.where(angle[:, None] > 1e-6, np.sin((1.0 - t) * angle[:, None]) / sin_a, 1.0 - t)
+    w2 = np.where(angle[:, None] > 1e-6, np.sin(t * angle[:, None]) / sin_a, t)
+    arc = centre[:, None, :] + rb[:, None, None] * (w1[..., None] * q1[:, None, :] + w2[..., None] * q2[:, None, :])
+    # Into object space: the ends move there, and the arc's segments are the object's.
+    to_obj = lambda x: (x - m[:3, 3]) @ inv.T  # noqa: E731
+    rounded = np.zeros(len(e1), bool)
+    rounded[idx] = True
+    return (rounded, to_obj(centre + rb[:, None] * q1), to_obj(centre + rb[:, None] * q2),
+            to_obj(arc.reshape(-1, 3)).reshape(arc.shape), pieces)
+
+
+def _with_arcs(seg, hit, e1, e2, t1, t2, arc, pieces):
+    """`seg` with each rounded corner's two ends (e1, e2 of the moved segments `hit`) at its
+    ball's circle (t1, t2, object space) and its arc (`arc`, `pieces` of it) appended, piece by
+    piece, in the chain of the segment it continues (chain order is by arc length: the arc
+    takes the corner's arc length at both its ends, so it sorts between the two and continues
+    both)."""
+    p0, p1 = seg.p0, seg.p1
+    i1, k1, i2, k2 = hit[e1 // 2], e1 % 2, hit[e2 // 2], e2 % 2
+    for i, k, t in ((i1, k1, t1), (i2, k2, t2)):
+        for end, out in ((0, p0), (1, p1)):
+            sel = k == end
+            out[i[sel]] = t[sel].astype(np.float32)
+    links = seg.chain_links
+    # Which way each arc runs, and in whose chain. Where segment 1's chain arrives at the corner
+    # (the corner at its higher arc length), the arc follows it, from T1 to T2; else where
+    # segment 2's does, the arc follows that, from T2 to T1; else (both leave the corner) the
+    # arc comes before segment 1 in its chain, from T2 to T1.
+    if links is not None:
+        s_at = lambda i, k: np.where(k == 0, links["s0"][i], links["s1"][i])  # noqa: E731
+        s_far = lambda i, k: np.where(k == 0, links["s1"][i], links["s0"][i])  # noqa: E731
+        arrives1 = s_far(i1, k1) < s_at(i1, k1)
+        arrives2 = s_far(i2, k2) < s_at(i2, k2)
+        forward = arrives1
+        by_2 = ~arrives1 & arrives2
+        owner, owner_k = np.where(by_2, i2, i1), np.where(by_2, k2, k1)
+        s_corner = s_at(owner, owner_k)
+    else:
+        forward = np.ones(len(i1), bool)
+        owner, owner_k = i1, k1
+    rows = np.repeat(np.arange(len(i1)), pieces)
+    q = np.arange(len(rows)) - np.repeat(np.cumsum(pieces) - pieces, pieces)  # piece along its run
+    fwd, n = forward[rows], pieces[rows]
+    a = arc[rows, np.where(fwd, q, n - q)].astype(np.float32)
+    b = arc[rows, np.where(fwd, q + 1, n - q - 1)].astype(np.float32)
+    # Each piece sees with the faces of the side it is nearer.
+    first, last = np.where(fwd, i1[rows], i2[rows]), np.where(fwd, i2[rows], i1[rows])
+    src = np.where(q < (n + 1) // 2, first, last)
+    taper_at = np.take_along_axis(seg.taper[owner], owner_k[:, None], 1)[:, 0]
+    new = dict(p0=np.concatenate([p0, a]), p1=np.concatenate([p1, b]),
+               n1=np.concatenate([seg.n1, seg.n1[src]]), n2=np.concatenate([seg.n2, seg.n2[src]]),
+               taper=np.concatenate([seg.taper, np.repeat(taper_at[rows, None], 2, axis=1).astype(seg.taper.dtype)]))
+    if seg.faces is not None:
+        new["faces"] = np.concatenate([seg.faces, seg.faces[src]])
+    if links is not None:
+        extra = np.zeros(len(rows), links.dtype)
+        for name in links.dtype.names:
+            extra[name] = links[name][owner[rows]]
+        extra["s0"] = extra["s1"] = s_corner[rows]
+        new["chain_links"] = np.concatenate([links, extra])
+    return dataclasses.replace(seg, **new)
 
 
 def _clip(x, m, w=1.0):

@@ -1,7 +1,7 @@
 """How a rounded edge's radius, in object space as the Bevel modifier's Amount is, scales into
 world units under an object's transform: the numpy side of lighting.glsl's el_radius_scale, for
 the CPU's copies of what the shaders decide (the viewport's edge culling, silhouette lines on the
-rounded outline). No bpy: plain-Python tests import it."""
+rounded outline, their corners' arcs). No bpy: plain-Python tests import it."""
 import numpy as np
 
 
@@ -9,6 +9,9 @@ def radius_scale(m, na, nb, e):
     """Per edge, how its radius scales into world units under m (lighting.glsl, el_radius_scale:
     the mean stretch of its two faces' directions square to it, object space)."""
     lin = np.asarray(m, np.float64)[:3, :3]
+    gram = lin.T @ lin
+    if np.allclose(gram, np.eye(3) * gram[0, 0], rtol=0.0, atol=1e-12 * max(gram[0, 0], 1e-300)):
+        return np.full(len(e), np.sqrt(gram[0, 0]))  # a uniform scale s: every edge's is s
     u = e / np.maximum(np.linalg.norm(e, axis=1, keepdims=True), 1e-30)
     da, db = np.cross(na, u), np.cross(nb, u)
     la, lb = np.linalg.norm(da, axis=1), np.linalg.norm(db, axis=1)
@@ -18,3 +21,10 @@ def radius_scale(m, na, nb, e):
     sb = np.linalg.norm(db[ok] @ lin.T, axis=1) / lb[ok]
     out[ok] = 0.5 * (sa + sb)
     return out
+
+
+def ball_scale(m, m1, m2, m3):
+    """Per corner patch, how its ball's radius scales under m (lighting.glsl, el_ball_scale: the
+    mean of its three edges' scales, each between two of its sectors' normals)."""
+    return (radius_scale(m, m1, m2, np.cross(m1, m2)) + radius_scale(m, m2, m3, np.cross(m2, m3))
+            + radius_scale(m, m3, m1, np.cross(m3, m1))) / 3.0

@@ -1,5 +1,7 @@
 """Per instance, the line batches a frame draws: each geometry's static ones and the
 view-dependent silhouettes and contours (native view calls)."""
+import numpy as np
+
 from .. import lines as ink
 from .. import native
 
@@ -19,15 +21,27 @@ def line_instances(scene, gpu_meshes, view_batches):
 def view_line_segments(scene, camera, line_settings, counters=None, rounded=False):
     """Per instance, type -> LineSegments of the view-dependent types (native view calls). An
     instance the library refuses (a singular transform, say) gets none, and a report. With
-    `rounded`, silhouettes of rounded edges lie on the fillets' outline (lines.view_lines)."""
+    `rounded`, silhouettes of rounded edges lie on the fillets' outline (lines.view_lines); an
+    instance whose move fails keeps them on its sharp edges, with a report."""
     out, seen = [], {}
     for inst in scene.instances:
         index = seen[id(inst.mesh)] = seen.get(id(inst.mesh), -1) + 1
         try:
-            out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters, rounded))
+            try:
+                out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters, rounded))
+            except (ArithmeticError, IndexError, ValueError, np.linalg.LinAlgError) as e:
+                if not rounded:
+                    raise
+                # Moving them onto the rounded outline failed (numpy, outline_lines.py): the
+                # object's silhouettes stay on its sharp edges, and the render goes on.
+                _report(scene, f"{inst.mesh.name}: silhouettes left on the sharp edges ({type(e).__name__}: {e})")
+                out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters, False))
         except native.NativeError as e:
-            note = f"{inst.mesh.name}: no silhouettes or contours ({e.message})"
-            if note not in scene.reports:
-                scene.reports.append(note)
+            _report(scene, f"{inst.mesh.name}: no silhouettes or contours ({e.message})")
             out.append({})
     return out
+
+
+def _report(scene, note):
+    if note not in scene.reports:
+        scene.reports.append(note)

@@ -1,12 +1,18 @@
 """Silhouette lines on the rounded outline (addon/outline_lines.py): a rounded edge's silhouette
-end moves onto its fillet's outline point, in closed form for a 90-degree edge, and two moved
-segments that meet at a corner end where their lines cross."""
+end moves onto its fillet's outline point, in closed form for a 90-degree edge; two moved
+segments that meet at a corner end where their lines cross, or, round a corner patch's ball, on
+its circle with an arc of it between; an unmoved silhouette runs on to the moved one it
+continues."""
+import dataclasses
 import types
 import unittest
 
 import numpy as np
 
 from addon_modules import addon_module
+from small_meshes import box as small_box
+from small_meshes import edge_frame
+from test_rounded_outline import extract_of
 
 outline_lines = addon_module("outline_lines")
 
@@ -77,7 +83,8 @@ class OutlinePoint(unittest.TestCase):
 def join(p0, p1, d):
     """Segments 0 -> 1 and 1 -> 2 (p0, p1, directions d), seen along z: both joined in place."""
     p0, p1 = np.array(p0, np.float32), np.array(p1, np.float32)
-    outline_lines._join_corners(np.array([[0, 1], [1, 2]]), np.arange(2), np.array(d, np.float32), p0, p1, np.eye(4))
+    e1, e2 = outline_lines._two_ends(np.array([[0, 1], [1, 2]]))
+    outline_lines._join_corners(e1, e2, np.arange(2), np.array(d, np.float32), p0, p1, np.eye(4))
     return p0, p1
 
 
@@ -106,6 +113,123 @@ class Corners(unittest.TestCase):
                       [[1.0, 0.0, 0.0], [1.0, 0.03, 0.0]])
         np.testing.assert_allclose(p1[0], (1.0, 0.01, 0.0), atol=1e-6)
         np.testing.assert_allclose(p0[1], (1.0, 0.01, 0.0), atol=1e-6)
+
+
+class UnmovedNeighbours(unittest.TestCase):
+    def test_an_unmoved_silhouette_runs_on_to_the_moved_end(self):
+        """Segment 0 -> 1 moved (its end at vertex 1 now at (1, 0.1, 0)), 1 -> 2 not (a sharp
+        side below a rounded rim): the side's end at vertex 1 moves there too, its far end
+        stays."""
+        p0 = np.array([[0.0, 0.1, 0.0], [1.0, 0.0, 0.0]], np.float32)
+        p1 = np.array([[1.0, 0.1, 0.0], [1.0, -1.0, 0.0]], np.float32)
+        outline_lines._meet_unmoved(np.array([[0, 1], [1, 2]]), np.array([True, True, False, False]), p0, p1)
+        np.testing.assert_allclose(p0[1], (1.0, 0.1, 0.0), atol=1e-7)
+        np.testing.assert_allclose(p1[1], (1.0, -1.0, 0.0), atol=1e-7)
+        np.testing.assert_allclose(p1[0], (1.0, 0.1, 0.0), atol=1e-7)
+        # The other way round (the moved segment second, the unmoved one's end its p1).
+        p0 = np.array([[1.0, -1.0, 0.0], [1.0, 0.1, 0.0]], np.float32)
+        p1 = np.array([[1.0, 0.0, 0.0], [0.0, 0.1, 0.0]], np.float32)
+        outline_lines._meet_unmoved(np.array([[2, 1], [1, 0]]), np.array([False, False, True, True]), p0, p1)
+        np.testing.assert_allclose(p1[0], (1.0, 0.1, 0.0), atol=1e-7)
+        np.testing.assert_allclose(p0[0], (1.0, -1.0, 0.0), atol=1e-7)
+
+    def test_three_ends_at_a_vertex_are_left_alone(self):
+        """Where three silhouettes meet, no one of them is the other's continuation."""
+        p0 = np.array([[0.0, 0.1, 0.0], [1.0, 0.0, 0.0], [1.0, 0.0, 0.0]], np.float32)
+        p1 = np.array([[1.0, 0.1, 0.0], [1.0, -1.0, 0.0], [2.0, 0.0, 0.0]], np.float32)
+        before = p0.copy()
+        outline_lines._meet_unmoved(np.array([[0, 1], [1, 2], [1, 3]]), np.array([True, True] + [False] * 4), p0, p1)
+        np.testing.assert_array_equal(p0, before)
+
+
+@dataclasses.dataclass
+class Segments:
+    """The fields of lines.LineSegments (lines.py loads the library; this test does not)."""
+    p0: np.ndarray
+    p1: np.ndarray
+    n1: np.ndarray
+    n2: np.ndarray
+    taper: np.ndarray
+    faces: np.ndarray = None
+    chain_links: np.ndarray = None
+
+
+def box_silhouettes(to_eye, radius=0.1):
+    """A unit box's extract (every edge rounded at `radius`, corner patches) and its silhouette
+    segments seen along -to_eye, orthographically, 200 x 200 pixels over 2 units."""
+    positions, edges, polys, tris = small_box()
+    ex, _ = extract_of(positions, edges, polys, tris, np.ones(len(edges), bool), radius=radius, corners=True)
+    ex.edge_data.positions = positions
+    normals, _ = edge_frame(positions, edges, polys, tris)
+    v = np.asarray(to_eye, float) / np.linalg.norm(to_eye)
+    front = normals.reshape(-1, 2, 3) @ v > 0.0
+    sil = np.flatnonzero(front[:, 0] != front[:, 1])
+    seg = Segments(positions[edges[sil, 0]].astype(np.float32), positions[edges[sil, 1]].astype(np.float32),
+                   normals[sil, :3], normals[sil, 3:], np.zeros((len(sil), 2), np.float32),
+                   np.ones((len(sil), 2), np.float32))
+    up = np.cross(v, (0.0, 0.0, 1.0))
+    x = up / np.linalg.norm(up)
+    y = np.cross(v, x)
+    view = np.eye(4)
+    view[:3, :3] = np.stack([x, y, v])
+    view[:3, 3] = -view[:3, :3] @ (0.5, 0.5, 0.5)
+    camera = types.SimpleNamespace(orthographic=True, view_dir=tuple(-v), eye=None, view=view,
+                                   projection=np.diag([1.0, 1.0, -0.1, 1.0]), width=200, height=200)
+    return ex, edges[sil], seg, camera
+
+
+class CornerArcs(unittest.TestCase):
+    def test_a_box_corner_is_the_balls_circle(self):
+        """A box seen along (1, 2, 3) outlines a hexagon, each of its corners a corner patch's
+        ball (centre r inside its three faces) 10 px wide: the two moved silhouettes end on the
+        ball's circle (the centre plus r times each one's outline direction), and an arc of it,
+        square to the view, joins them in pieces whose chords stay within 0.25 px of it."""
+        ex, pairs, seg, camera = box_silhouettes((1.0, 2.0, 3.0))
+        out = outline_lines.on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
+        n = len(seg.p0)
+        self.assertEqual(n, 6)
+        arcs = slice(n, None)
+        self.assertGreater(len(out.p0) - n, 6, "an arc of several pieces at each of the six corners")
+        v = np.array([1.0, 2.0, 3.0]) / np.sqrt(14.0)
+        corners = [c for c in np.ndindex(2, 2, 2) if c not in ((0, 0, 0), (1, 1, 1))]
+        centres = np.array([np.where(np.array(c) == 1, 0.9, 0.1) for c in corners])
+        for ends in (out.p0[arcs], out.p1[arcs]):
+            off = ends[:, None, :] - centres[None]
+            near = np.argmin(np.linalg.norm(off, axis=2), axis=1)
+            off = off[np.arange(len(ends)), near]
+            np.testing.assert_allclose(np.linalg.norm(off, axis=1), 0.1, atol=1e-5)
+            np.testing.assert_allclose(off @ v, 0.0, atol=1e-5)
+        # One closed stroke: every end meets exactly one other.
+        ends = np.concatenate([out.p0, out.p1]).astype(np.float64)
+        gap = np.linalg.norm(ends[:, None] - ends[None], axis=2) + np.eye(len(ends))
+        self.assertLess(float(gap.min(axis=1).max()), 1e-6)
+        # Chords within 0.25 px (1 px = 0.01 here) of the circle: their midpoints' depth inside it.
+        mid = 0.5 * (out.p0[arcs] + out.p1[arcs])
+        inside = 0.1 - np.linalg.norm(mid[:, None, :] - centres[None], axis=2).min(axis=1)
+        self.assertLess(float(inside.max()), 0.0025 + 1e-6)
+
+    def test_a_corner_without_a_ball_keeps_its_crossing(self):
+        """With the patch at (1, 0, 0) left out (a third edge there not rounded, say), its two
+        silhouettes end where their images cross, and the other five corners still round."""
+        ex, pairs, seg, camera = box_silhouettes((1.0, 2.0, 3.0))
+        every = len(outline_lines.on_rounded_outline(ex, pairs, seg, np.eye(4), camera).p0) - 6
+        ex, pairs, seg, camera = box_silhouettes((1.0, 2.0, 3.0))
+        edges = ex.edges[0]
+        keep = np.flatnonzero(~np.all(edges.corners.position == (1.0, 0.0, 0.0), axis=1))
+        self.assertEqual(len(keep), len(edges.corners) - 1)
+        edges.corners = edges.corners.subset(keep)
+        out = outline_lines.on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
+        ends = np.concatenate([out.p0[:6], out.p1[:6]]).astype(np.float64)
+        near = np.linalg.norm(ends - (1.0, 0.0, 0.0), axis=1) < 0.3
+        self.assertEqual(int(near.sum()), 2)
+        np.testing.assert_allclose(ends[near][0], ends[near][1], atol=1e-6)
+        self.assertTrue(5 <= len(out.p0) - 6 < every, "five arcs, one piece or more each")
+
+    def test_no_arc_where_the_ball_is_under_a_pixel(self):
+        """r 0.005: the ball's circle is a pixel wide; the lines join where they cross."""
+        ex, pairs, seg, camera = box_silhouettes((1.0, 2.0, 3.0), radius=0.005)
+        out = outline_lines.on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
+        self.assertEqual(len(out.p0), len(seg.p0))
 
 
 if __name__ == "__main__":
