@@ -19,6 +19,7 @@ CORNERS_PER_ROW = 1024
 # then of up to CORNERS_PER_TRIANGLE corners, each plus one (0: none). A sliver of an n-gon's fan
 # (a cylinder's 32-sided cap) lies in the reach of up to six rims' strips.
 EDGES_PER_TRIANGLE = 8
+VERTEX_EDGES = 4  # judged in the vertex shader (varyings); the rest per pixel (EL_OUTLINE_MORE)
 CORNERS_PER_TRIANGLE = 4  # a quad's half lies in the zones of all four of its corners
 TRIANGLE_TEXELS = 3
 TRIANGLES_PER_ROW = 2048

@@ -16,9 +16,13 @@ void main()
       discard;
     }
   }
+#ifdef EL_OUTLINE_MORE
+  /* Only the triangles that list more than four edges are drawn by this variant: on llvmpipe
+   * the check's code costs every fragment of the program, taken or not. */
   if (el_in_more_strips(int(surface_tri + 0.5), gl_FragCoord.xy)) {
     discard;
   }
+#endif
   for (int q = 0; q < 4; q++) {
     vec4 z = q == 0 ? outline_corner0 : (q == 1 ? outline_corner1 : (q == 2 ? outline_corner2 : outline_corner3));
     if (outline_ball[q] > 0.0 && z.z > 0.0 && z.w > 0.0 && dot(z.xy, z.xy) > outline_ball[q] * outline_ball[q]) {

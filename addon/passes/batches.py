@@ -57,9 +57,10 @@ def _float_rows(items, per_row, limit):
 
 
 def outline_textures(extract):
-    """slot -> (edge, corner, triangle textures) of rounded_outline.records, and which of the
-    slot's triangles list anything, for the slots a strip or a corner may cross. Past what a
-    texture holds, the outline stays the sharp mesh's."""
+    """slot -> ((edge, corner, triangle textures) of rounded_outline.records, which of the
+    slot's triangles list anything, which of those more edges than the vertex shader judges),
+    for the slots a strip or a corner may cross. Past what a texture holds, the outline stays
+    the sharp mesh's."""
     recs = rounded_outline.records(extract)
     if recs is None:
         return {}
@@ -74,7 +75,8 @@ def outline_textures(extract):
         tris = _float_rows(texels.reshape(len(lists), rounded_outline.TRIANGLE_TEXELS, 4),
                            rounded_outline.TRIANGLES_PER_ROW, limit)
         if edges is not None and corners is not None and tris is not None:
-            out[slot] = ((edges, corners, tris), np.flatnonzero(np.any(lists > 0.0, axis=1)))
+            out[slot] = ((edges, corners, tris), np.flatnonzero(np.any(lists > 0.0, axis=1)),
+                         np.flatnonzero(lists[:, rounded_outline.VERTEX_EDGES] > 0.0))
     return out
 
 
@@ -163,15 +165,18 @@ class GpuMesh:
     def rebuild_edges(self):
         self.edges = edge_batches(self.extract)
         self.corners = corner_batches(self.extract)
-        # The slots a rounded silhouette may pull in: their textures, and their triangles in two
-        # batches over the slot's vertex buffer, those that list a strip or a corner (drawn
-        # by the program that walks the lists) and the rest (by the plain one). Mixed in one
-        # batch, every vertex group on llvmpipe would pay for the walk.
+        # The slots a rounded silhouette may pull in: their textures, and their triangles in
+        # three batches over the slot's vertex buffer: those that list a strip or a corner
+        # (drawn by the program that walks the lists), those of them that list more edges than
+        # its vertex shader judges (by its variant that judges the rest per pixel) and the rest
+        # (by the plain one). Mixed in one batch, every vertex group or fragment on llvmpipe
+        # would pay for the walk.
         self.outline = {}
-        for slot, (textures, listed) in outline_textures(self.extract).items():
+        for slot, (textures, listed, more) in outline_textures(self.extract).items():
             vbo = self.surface_vbo[slot]
             rest = np.setdiff1d(np.arange(len(self.extract.slot_triangles[slot])), listed)
-            self.outline[slot] = (textures, _triangles_batch(vbo, listed), _triangles_batch(vbo, rest))
+            self.outline[slot] = (textures, _triangles_batch(vbo, np.setdiff1d(listed, more)),
+                                  _triangles_batch(vbo, rest), _triangles_batch(vbo, more))
         self.edge_count = sum(len(e) for e in self.extract.edges.values())
 
 

@@ -66,7 +66,8 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
     docs/lines.md). With `rounded` (the edge pass draws the bands), the triangles a rounded
     convex edge's strip or a corner's zone may cross leave out the strip between a sharp
     silhouette and its fillet's outline (rounded_outline.glsl), in their own variant and batch
-    (batches.GpuMesh.outline). `culls` (cull_modes), per instance: a closed surface's back
+    (batches.GpuMesh.outline), and those that list more edges than its vertex shader judges in
+    a variant that judges the rest per pixel (EL_OUTLINE_MORE). `culls` (cull_modes), per instance: a closed surface's back
     faces culled where they cannot show (closed_surfaces.py), since the strips would show its
     inside."""
     draws, firsts = {}, {}
@@ -82,18 +83,20 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
             ids_of = (float(index + 1), float(first.get(slot, 0)))
             outline = gm.outline.get(slot) if rounded else None
             if outline is None:
-                draws.setdefault((mode, False), []).append((inst.matrix, s, batch, ids_of, None, cull))
+                draws.setdefault((mode, 0), []).append((inst.matrix, s, batch, ids_of, None, cull))
                 continue
-            textures, listed, rest = outline
-            if rest is not None:
-                draws.setdefault((mode, False), []).append((inst.matrix, s, rest, ids_of, None, cull))
-            draws.setdefault((mode, True), []).append((inst.matrix, s, listed, ids_of, textures, cull))
+            textures, listed, rest, more = outline
+            for kind, part in ((0, rest), (1, listed), (2, more)):
+                if part is not None:
+                    draws.setdefault((mode, kind), []).append((inst.matrix, s, part, ids_of, textures if kind else None, cull))
     outputs = surface_outputs(targets, ids)
     with pass_state.drawing("surface", targets.surface_ids_fb if ids else targets.surface_fb):
         for (mode, outline), items in sorted(draws.items()):
             defines = {"EL_SURFACE_MODE": mode, **outputs}
             if outline:
                 defines.update(EL_ROUNDED_OUTLINE=1, **rounded_outline.layout_defines())
+            if outline == 2:
+                defines.update(EL_OUTLINE_MORE=1)
             shader = shader_lib.get("surface", defines)
             shader.bind()
             shader.uniform_block("frame", ubo)
