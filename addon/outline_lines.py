@@ -113,9 +113,9 @@ def _unit(a):
 def on_rounded_outline(extract, edge_pairs, seg, matrix, camera):
     """`seg` (lines.LineSegments, object space) of silhouettes along the mesh edges `edge_pairs`
     (vertex pairs, p0's vertex first), with those on convex rounded edges moved onto their
-    fillets' outline, their corners joined (round a corner patch's ball, by an arc of its
-    circle appended as segments of their own), and the unmoved ones they run on into meeting
-    them: a new LineSegments."""
+    fillets' outline and their corners joined (round a corner patch's ball, by an arc of its
+    circle appended as segments of their own): a new LineSegments. A silhouette that is not
+    moved keeps its ends where a moved one runs on into it (docs/lines.md)."""
     at = records_of(extract, edge_pairs)
     hit = np.flatnonzero(at >= 0)
     if not len(hit):
@@ -134,9 +134,6 @@ def on_rounded_outline(extract, edge_pairs, seg, matrix, camera):
     arcs = _corner_arcs(extract, pairs[hit], rec, e1, e2, matrix, camera)
     round_ = np.zeros(len(e1), bool) if arcs is None else arcs[0]
     _join_corners(e1[~round_], e2[~round_], hit, d, p0, p1, clip)
-    moved = np.zeros((len(pairs), 2), bool)
-    moved[hit] = np.any(moves != 0.0, axis=2).T
-    _meet_unmoved(pairs, moved.reshape(-1), p0, p1)
     out = dataclasses.replace(seg, p0=p0, p1=p1)
     return out if arcs is None else _with_arcs(out, hit, e1[round_], e2[round_], *arcs[1:])
 
@@ -149,23 +146,6 @@ def _two_ends(pairs):
     v = verts[order]
     first = np.flatnonzero((v[:-1] == v[1:]) & np.r_[True, v[1:-1] != v[:-2]] & np.r_[v[2:] != v[1:-1], True])
     return order[first], order[first + 1]
-
-
-def _meet_unmoved(pairs, moved, p0, p1):
-    """Where a silhouette that moved onto a fillet's outline runs on into one that did not (a
-    rounded rim's silhouette into the sharp or smooth side of a cylinder below it), the unmoved
-    segment's end moves to the moved one's: the side's outline ends where the fillet's begins,
-    and the ink stays one stroke instead of stepping by the strip's width. `moved`: per end
-    (2 i + k), whether it moved."""
-    if not len(pairs):
-        return
-    e1, e2 = _two_ends(pairs)
-    one = moved[e1] != moved[e2]
-    src, dst = np.where(moved[e1], e1, e2)[one], np.where(moved[e1], e2, e1)[one]
-    ends = np.stack([p0, p1], axis=1).reshape(-1, 3)
-    for k, out in ((0, p0), (1, p1)):
-        sel = dst % 2 == k
-        out[dst[sel] // 2] = ends[src[sel]]
 
 
 def _join_corners(e1, e2, hit, d, p0, p1, clip):

@@ -1,8 +1,7 @@
 """Silhouette lines on the rounded outline (addon/outline_lines.py): a rounded edge's silhouette
 end moves onto its fillet's outline point, in closed form for a 90-degree edge; two moved
 segments that meet at a corner end where their lines cross, or, round a corner patch's ball, on
-its circle with an arc of it between; an unmoved silhouette runs on to the moved one it
-continues."""
+its circle with an arc of it between."""
 import dataclasses
 import types
 import unittest
@@ -113,33 +112,6 @@ class Corners(unittest.TestCase):
                       [[1.0, 0.0, 0.0], [1.0, 0.03, 0.0]])
         np.testing.assert_allclose(p1[0], (1.0, 0.01, 0.0), atol=1e-6)
         np.testing.assert_allclose(p0[1], (1.0, 0.01, 0.0), atol=1e-6)
-
-
-class UnmovedNeighbours(unittest.TestCase):
-    def test_an_unmoved_silhouette_runs_on_to_the_moved_end(self):
-        """Segment 0 -> 1 moved (its end at vertex 1 now at (1, 0.1, 0)), 1 -> 2 not (a sharp
-        side below a rounded rim): the side's end at vertex 1 moves there too, its far end
-        stays."""
-        p0 = np.array([[0.0, 0.1, 0.0], [1.0, 0.0, 0.0]], np.float32)
-        p1 = np.array([[1.0, 0.1, 0.0], [1.0, -1.0, 0.0]], np.float32)
-        outline_lines._meet_unmoved(np.array([[0, 1], [1, 2]]), np.array([True, True, False, False]), p0, p1)
-        np.testing.assert_allclose(p0[1], (1.0, 0.1, 0.0), atol=1e-7)
-        np.testing.assert_allclose(p1[1], (1.0, -1.0, 0.0), atol=1e-7)
-        np.testing.assert_allclose(p1[0], (1.0, 0.1, 0.0), atol=1e-7)
-        # The other way round (the moved segment second, the unmoved one's end its p1).
-        p0 = np.array([[1.0, -1.0, 0.0], [1.0, 0.1, 0.0]], np.float32)
-        p1 = np.array([[1.0, 0.0, 0.0], [0.0, 0.1, 0.0]], np.float32)
-        outline_lines._meet_unmoved(np.array([[2, 1], [1, 0]]), np.array([False, False, True, True]), p0, p1)
-        np.testing.assert_allclose(p1[0], (1.0, 0.1, 0.0), atol=1e-7)
-        np.testing.assert_allclose(p0[0], (1.0, -1.0, 0.0), atol=1e-7)
-
-    def test_three_ends_at_a_vertex_are_left_alone(self):
-        """Where three silhouettes meet, no one of them is the other's continuation."""
-        p0 = np.array([[0.0, 0.1, 0.0], [1.0, 0.0, 0.0], [1.0, 0.0, 0.0]], np.float32)
-        p1 = np.array([[1.0, 0.1, 0.0], [1.0, -1.0, 0.0], [2.0, 0.0, 0.0]], np.float32)
-        before = p0.copy()
-        outline_lines._meet_unmoved(np.array([[0, 1], [1, 2], [1, 3]]), np.array([True, True] + [False] * 4), p0, p1)
-        np.testing.assert_array_equal(p0, before)
 
 
 @dataclasses.dataclass
