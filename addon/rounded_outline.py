@@ -16,8 +16,8 @@ EDGES_PER_ROW = 1024
 CORNER_TEXELS = 5
 CORNERS_PER_ROW = 1024
 # Per triangle three texels: the numbers of up to EDGES_PER_TRIANGLE edges, four to a texel,
-# then of up to CORNERS_PER_TRIANGLE corners, each plus one (0: none). A sliver of an n-gon's fan
-# (a cylinder's 32-sided cap) lies in the reach of up to six rims' strips.
+# then of up to CORNERS_PER_TRIANGLE corners, each plus one (0: none). A sliver of an n-gon's
+# triangulation (a cylinder's 32-sided cap) lies in the reach of five to eight rims' strips.
 EDGES_PER_TRIANGLE = 8
 VERTEX_EDGES = 4  # judged in the vertex shader (varyings); the rest per pixel (EL_OUTLINE_MORE)
 CORNERS_PER_TRIANGLE = 4  # a quad's half lies in the zones of all four of its corners
@@ -149,10 +149,11 @@ def _diagonals(tri_verts, tri_poly):
     3 i + k), each listed from both of its triangles."""
     ends = np.stack([tri_verts, np.roll(tri_verts, -1, axis=1)], axis=2).reshape(-1, 2)
     pair = np.sort(ends, axis=1)
-    key = (pair[:, 0] * (int(tri_verts.max()) + 1) + pair[:, 1]) * (int(tri_poly.max()) + 1) + np.repeat(tri_poly, 3)
-    order = np.argsort(key, kind="stable")
-    k = key[order]
-    twin = np.flatnonzero(k[1:] == k[:-1])
+    poly = np.repeat(tri_poly, 3)
+    # By vertex pair and polygon (three keys: one product of them overflows int64 past ~2M).
+    order = np.lexsort((poly, pair[:, 1], pair[:, 0]))
+    k = np.stack([pair[order, 0], pair[order, 1], poly[order]], axis=1)
+    twin = np.flatnonzero(np.all(k[1:] == k[:-1], axis=1))
     a, b = order[twin], order[twin + 1]
     sides = np.r_[a, b]
     across = np.r_[b, a] // 3
