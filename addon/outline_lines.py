@@ -113,9 +113,9 @@ def _unit(a):
 def on_rounded_outline(extract, edge_pairs, seg, matrix, camera):
     """`seg` (lines.LineSegments, object space) of silhouettes along the mesh edges `edge_pairs`
     (vertex pairs, p0's vertex first), with those on convex rounded edges moved onto their
-    fillets' outline and their corners joined (round a corner patch's ball, by an arc of its
-    circle appended as segments of their own): a new LineSegments. A silhouette that is not
-    moved keeps its ends where a moved one runs on into it (docs/lines.md)."""
+    fillets' outline, their corners joined (round a corner patch's ball, by an arc of its
+    circle appended as segments of their own), and an unmoved silhouette they run on into
+    ending at the fillet's foot, joined to them there: a new LineSegments."""
     at = records_of(extract, edge_pairs)
     hit = np.flatnonzero(at >= 0)
     if not len(hit):
@@ -135,7 +135,61 @@ def on_rounded_outline(extract, edge_pairs, seg, matrix, camera):
     round_ = np.zeros(len(e1), bool) if arcs is None else arcs[0]
     _join_corners(e1[~round_], e2[~round_], hit, d, p0, p1, clip)
     out = dataclasses.replace(seg, p0=p0, p1=p1)
-    return out if arcs is None else _with_arcs(out, hit, e1[round_], e2[round_], *arcs[1:])
+    if arcs is not None:
+        out = _with_arcs(out, hit, e1[round_], e2[round_], *arcs[1:])
+    moved = np.zeros((len(pairs), 2), bool)
+    moved[hit] = np.any(moves != 0.0, axis=2).T
+    setback = np.zeros(len(pairs))
+    na, nb = _unit(rec[:, 0, :3].astype(np.float64)), _unit(rec[:, 1, :3].astype(np.float64))
+    cos_fold = np.clip(_dot(na, nb), -0.999, 1.0)
+    setback[hit] = rec[:, 0, 3] * np.sqrt((1.0 - cos_fold) / (1.0 + cos_fold))  # r tan(a / 2), object space
+    return _to_the_foot(out, pairs, moved.reshape(-1), setback)
+
+
+def _to_the_foot(seg, pairs, moved, setback):
+    """Where a silhouette moved onto its fillet's outline runs on into one that is not moved (a
+    cylinder's rounded rim into its side), the fillet's outline runs along the unmoved one's
+    line to the fillet's foot, its setback from the vertex, and from there into the moved end.
+    So the unmoved segment ends at the foot, along its own line (on its own faces: tilted
+    instead, a long side silhouette between thin facets left them and was hidden), and a
+    segment from the foot to the moved end, seen with the moved one's faces, is appended in the
+    unmoved one's chain. `moved`: per end (2 i + k) of the first len(pairs) segments."""
+    if not len(pairs):
+        return seg
+    e1, e2 = _two_ends(pairs)
+    one = moved[e1] != moved[e2]
+    if not one.any():
+        return seg
+    r_end, s_end = np.where(moved[e1], e1, e2)[one], np.where(moved[e1], e2, e1)[one]
+    i_r, k_r, i_s, k_s = r_end // 2, r_end % 2, s_end // 2, s_end % 2
+    p0, p1 = seg.p0, seg.p1
+    pick = lambda i, k: np.where((k == 0)[:, None], p0[i], p1[i]).astype(np.float64)  # noqa: E731
+    vert, far, tip = pick(i_s, k_s), pick(i_s, 1 - k_s), pick(i_r, k_r)
+    length = np.linalg.norm(far - vert, axis=1)
+    foot = vert + (far - vert) * (np.minimum(setback[i_r], 0.5 * length) / np.maximum(length, 1e-30))[:, None]
+    for end, out in ((0, p0), (1, p1)):
+        sel = k_s == end
+        out[i_s[sel]] = foot[sel].astype(np.float32)
+    links = seg.chain_links
+    # Along the unmoved one's chain: after it where the chain arrives at the vertex, else before.
+    if links is not None:
+        s_at = np.where(k_s == 0, links["s0"][i_s], links["s1"][i_s])
+        arrives = np.where(k_s == 0, links["s1"][i_s], links["s0"][i_s]) < s_at
+    else:
+        arrives = np.ones(len(i_s), bool)
+    a = np.where(arrives[:, None], foot, tip).astype(np.float32)
+    b = np.where(arrives[:, None], tip, foot).astype(np.float32)
+    taper = np.take_along_axis(seg.taper[i_s], k_s[:, None], 1)
+    new = dict(p0=np.concatenate([p0, a]), p1=np.concatenate([p1, b]),
+               n1=np.concatenate([seg.n1, seg.n1[i_r]]), n2=np.concatenate([seg.n2, seg.n2[i_r]]),
+               taper=np.concatenate([seg.taper, np.repeat(taper, 2, axis=1).astype(seg.taper.dtype)]))
+    if seg.faces is not None:
+        new["faces"] = np.concatenate([seg.faces, seg.faces[i_r]])
+    if links is not None:
+        extra = links[i_s].copy()
+        extra["s0"] = extra["s1"] = s_at
+        new["chain_links"] = np.concatenate([links, extra])
+    return dataclasses.replace(seg, **new)
 
 
 def _two_ends(pairs):

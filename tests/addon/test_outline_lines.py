@@ -1,7 +1,8 @@
 """Silhouette lines on the rounded outline (addon/outline_lines.py): a rounded edge's silhouette
 end moves onto its fillet's outline point, in closed form for a 90-degree edge; two moved
 segments that meet at a corner end where their lines cross, or, round a corner patch's ball, on
-its circle with an arc of it between."""
+its circle with an arc of it between; an unmoved silhouette they run on into ends at the
+fillet's foot."""
 import dataclasses
 import types
 import unittest
@@ -112,6 +113,29 @@ class Corners(unittest.TestCase):
                       [[1.0, 0.0, 0.0], [1.0, 0.03, 0.0]])
         np.testing.assert_allclose(p1[0], (1.0, 0.01, 0.0), atol=1e-6)
         np.testing.assert_allclose(p0[1], (1.0, 0.01, 0.0), atol=1e-6)
+
+
+class ToTheFoot(unittest.TestCase):
+    def test_an_unmoved_side_ends_at_the_fillets_foot(self):
+        """Segment 0 -> 1 moved (its end at vertex 1 now at (1, 0.1, 0.05)), 1 -> 2 not (a side
+        running from vertex 1 at (1, 0, 0) down to (1, -1, 0)), the setback 0.1: the side ends
+        at the foot (1, -0.1, 0), along its own line, and a segment from the foot to the moved
+        end, with the moved one's faces, follows it in its chain."""
+        links = np.zeros(2, [("chain", "<u4"), ("s0", "<f4"), ("s1", "<f4")])
+        links["s0"], links["s1"] = (0.0, 1.0), (1.0, 2.0)
+        seg = Segments(np.array([[0.0, 0.1, 0.05], [1.0, -1.0, 0.0]], np.float32),
+                       np.array([[1.0, 0.1, 0.05], [1.0, 0.0, 0.0]], np.float32),
+                       np.zeros((2, 3), np.float32), np.zeros((2, 3), np.float32), np.zeros((2, 2), np.float32),
+                       np.array([[1.0, 2.0], [3.0, 4.0]], np.float32), links)
+        out = outline_lines._to_the_foot(seg, np.array([[0, 1], [2, 1]]), np.array([True, True, False, False]),
+                                         np.array([0.1, 0.0]))
+        self.assertEqual(len(out.p0), 3)
+        np.testing.assert_allclose(out.p1[1], (1.0, -0.1, 0.0), atol=1e-6)   # the side's end, at the foot
+        np.testing.assert_allclose(out.p0[1], (1.0, -1.0, 0.0))             # its far end stays
+        np.testing.assert_allclose(out.p0[2], (1.0, -0.1, 0.0), atol=1e-6)   # foot -> moved end
+        np.testing.assert_allclose(out.p1[2], (1.0, 0.1, 0.05), atol=1e-6)
+        np.testing.assert_array_equal(out.faces[2], (1.0, 2.0))
+        self.assertEqual((out.chain_links["s0"][2], out.chain_links["s1"][2]), (2.0, 2.0))
 
 
 @dataclasses.dataclass
