@@ -179,16 +179,24 @@ def _to_the_foot(seg, pairs, moved, setback):
         arrives = np.ones(len(i_s), bool)
     a = np.where(arrives[:, None], foot, tip).astype(np.float32)
     b = np.where(arrives[:, None], tip, foot).astype(np.float32)
-    taper = np.take_along_axis(seg.taper[i_s], k_s[:, None], 1)
-    new = dict(p0=np.concatenate([p0, a]), p1=np.concatenate([p1, b]),
-               n1=np.concatenate([seg.n1, seg.n1[i_r]]), n2=np.concatenate([seg.n2, seg.n2[i_r]]),
-               taper=np.concatenate([seg.taper, np.repeat(taper, 2, axis=1).astype(seg.taper.dtype)]))
+    taper = np.take_along_axis(seg.taper[i_s], k_s[:, None], 1)[:, 0]
+    return _appended(seg, a, b, i_r, taper, i_s, s_at if links is not None else None)
+
+
+def _appended(seg, a, b, like, taper, chain_of, s):
+    """`seg` with segments a -> b appended (object space), each seen with the faces and normals
+    of segment `like`, its taper `taper` at both ends, and in the chain of segment `chain_of`
+    at arc length `s` at both ends (so that it sorts between the two it joins, and continues
+    both)."""
+    new = dict(p0=np.concatenate([seg.p0, a]), p1=np.concatenate([seg.p1, b]),
+               n1=np.concatenate([seg.n1, seg.n1[like]]), n2=np.concatenate([seg.n2, seg.n2[like]]),
+               taper=np.concatenate([seg.taper, np.repeat(taper[:, None], 2, axis=1).astype(seg.taper.dtype)]))
     if seg.faces is not None:
-        new["faces"] = np.concatenate([seg.faces, seg.faces[i_r]])
-    if links is not None:
-        extra = links[i_s].copy()
-        extra["s0"] = extra["s1"] = s_at
-        new["chain_links"] = np.concatenate([links, extra])
+        new["faces"] = np.concatenate([seg.faces, seg.faces[like]])
+    if seg.chain_links is not None:
+        extra = seg.chain_links[chain_of].copy()
+        extra["s0"] = extra["s1"] = s
+        new["chain_links"] = np.concatenate([seg.chain_links, extra])
     return dataclasses.replace(seg, **new)
 
 
@@ -351,18 +359,8 @@ def _with_arcs(seg, hit, e1, e2, t1, t2, arc, pieces):
     first, last = np.where(fwd, i1[rows], i2[rows]), np.where(fwd, i2[rows], i1[rows])
     src = np.where(q < (n + 1) // 2, first, last)
     taper_at = np.take_along_axis(seg.taper[owner], owner_k[:, None], 1)[:, 0]
-    new = dict(p0=np.concatenate([p0, a]), p1=np.concatenate([p1, b]),
-               n1=np.concatenate([seg.n1, seg.n1[src]]), n2=np.concatenate([seg.n2, seg.n2[src]]),
-               taper=np.concatenate([seg.taper, np.repeat(taper_at[rows, None], 2, axis=1).astype(seg.taper.dtype)]))
-    if seg.faces is not None:
-        new["faces"] = np.concatenate([seg.faces, seg.faces[src]])
-    if links is not None:
-        extra = np.zeros(len(rows), links.dtype)
-        for name in links.dtype.names:
-            extra[name] = links[name][owner[rows]]
-        extra["s0"] = extra["s1"] = s_corner[rows]
-        new["chain_links"] = np.concatenate([links, extra])
-    return dataclasses.replace(seg, **new)
+    return _appended(seg, a, b, src, taper_at[rows], owner[rows],
+                     s_corner[rows] if links is not None else None)
 
 
 def _clip(x, m, w=1.0):

@@ -90,6 +90,21 @@ def box(name, size=1.0, location=(0.0, 0.0, 0.0), collection=None):
     return mesh_object(name, verts, faces, location, collection)
 
 
+def cylinder(name, segments=32):
+    """A cylinder as Blender's Cylinder is made (radius 0.5, depth 1, n-gon caps, which Blender
+    triangulates into long slivers), smooth-shaded with its rims sharp (its side's facets fold
+    by 360 / segments degrees)."""
+    bm = bmesh.new()
+    bmesh.ops.create_cone(bm, cap_ends=True, segments=segments, radius1=0.5, radius2=0.5, depth=1.0)
+    me = bpy.data.meshes.new(name)
+    bm.to_mesh(me)
+    bm.free()
+    ob = bpy.data.objects.new(name, me)
+    bpy.context.scene.collection.objects.link(ob)
+    smooth_with_sharp_creases(me)
+    return ob
+
+
 def material(name, rgb):
     """A material of colour rgb on every version (5.0 renders materials from their node tree)."""
     mat = bpy.data.materials.new(name)

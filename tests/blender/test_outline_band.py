@@ -217,20 +217,13 @@ def cylinder_coverage(width_px, fillet):
     """A 32-sided cylinder as Blender's Cylinder is made (n-gon caps, which Blender triangulates
     into long slivers), its rims rounded at width_px pixels, seen from above on a transparent
     film: its alpha, with the exactly circular fillets (highlights off) or with EdgeLight's."""
-    import bmesh
     camera = np.array((2.2, -3.0, 2.6))
     helpers.empty_scene(*RESOLUTION, samples=64 if fillet else 8)
     helpers.add_camera(tuple(camera))
     helpers.add_sun((0.5, -0.8, 0.6), 4.0)
     scene = bpy.context.scene
     scene.render.film_transparent = True
-    bm = bmesh.new()
-    bmesh.ops.create_cone(bm, cap_ends=True, segments=32, radius1=0.5, radius2=0.5, depth=1.0)
-    me = bpy.data.meshes.new("Cylinder")
-    bm.to_mesh(me)
-    bm.free()
-    scene.collection.objects.link(bpy.data.objects.new("Cylinder", me))
-    zoo.smooth_with_sharp_creases(me)
+    me = zoo.cylinder("Cylinder").data
     mat = zoo.material("CylinderMaterial", (0.8, 0.8, 0.8))
     mat.edgelight.radius = zoo.radius_at_width(width_px, camera, RESOLUTION[0])
     me.materials.append(mat)

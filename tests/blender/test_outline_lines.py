@@ -220,18 +220,11 @@ class SilhouetteLines(unittest.TestCase):
         outline; each side ends at the fillet's foot and a segment from there meets the rim's
         moved end (left on the sharp vertex, the side's stroke ran on past the moved rim).
         Every silhouette end's image meets another's."""
-        import bmesh
         lines = importlib.import_module(helpers.MODULE + ".lines")
         helpers.empty_scene(*RESOLUTION, samples=1)
         helpers.add_camera((2.2, -3.0, 2.6))
         helpers.add_sun((0.5, -0.8, 0.6), 4.0)
-        bm = bmesh.new()
-        bmesh.ops.create_cone(bm, cap_ends=True, segments=32, radius1=0.5, radius2=0.5, depth=1.0)
-        me = bpy.data.meshes.new("Cylinder")
-        bm.to_mesh(me)
-        bm.free()
-        bpy.context.scene.collection.objects.link(bpy.data.objects.new("Cylinder", me))
-        zoo.smooth_with_sharp_creases(me)
+        me = zoo.cylinder("Cylinder").data
         mat = zoo.material("CylinderMaterial", (0.8, 0.8, 0.8))
         mat.edgelight.radius = zoo.radius_at_width(8.0, np.array((2.2, -3.0, 2.6)), RESOLUTION[0])
         me.materials.append(mat)
