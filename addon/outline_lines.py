@@ -64,7 +64,9 @@ def records_of(extract, edge_pairs):
 def outline_moves(recs, matrix, camera):
     """(2, N, 3) object-space moves of each record's two ends (its p0, p1) onto its fillet's
     outline as seen from `camera` (passes.camera.Camera, world space) through `matrix`; zero at
-    an end where the edge is no silhouette."""
+    an end where the edge is no silhouette, and where a concave fillet meets it (the record's
+    cut there): that fillet's end fills the corner, and the outline runs out round it, past the
+    sharp edge's line (rounded_outline.glsl's el_strip_part)."""
     out = np.zeros((2, len(recs), 3), np.float64)
     m = np.asarray(matrix, np.float64)
     lin = m[:3, :3]
@@ -83,7 +85,7 @@ def outline_moves(recs, matrix, camera):
             else np.asarray(camera.eye, np.float64) - w
         p, c, sil = fillet_outline(ea, eb, _unit(v))
         move = -radius[:, None] * (c - p)
-        out[end] = np.where(sil[:, None], move @ inv.T, 0.0)
+        out[end] = np.where((sil & (r[:, 2 + end, 3] == 0.0))[:, None], move @ inv.T, 0.0)
     return out
 
 

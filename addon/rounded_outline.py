@@ -6,9 +6,12 @@ the nearest of those whose strip reaches into its patch (a quad's other half at 
 the thin facets of a triangulated face along it). No bpy: plain-Python tests import it."""
 import numpy as np
 
-# Per edge: (N1, radius), (N2, 0), (p0, 0), (p1, 0), (turn of N1, 0), (turn of N2, 0), object
-# space, the normals as the edge pass shades with (edge_choice.EdgeSet: at t along the edge a
-# side's normal is normalize(N + (t - 1/2) turn)).
+# Per edge: (N1, radius), (N2, 0), (p0, cut at p0), (p1, cut at p1), (turn of N1, concave edge
+# at p0), (turn of N2, concave edge at p1), object space, the normals as the edge pass shades with (edge_choice.EdgeSet: at t
+# along the edge a side's normal is normalize(N + (t - 1/2) turn)); a cut is the fraction of the
+# edge from that end along which a concave fillet meeting it there fills the corner, signed by
+# the face its end arc lies in (_concave_cuts); 1 where a concave edge meets that end, else 0
+# (_concave_ends).
 EDGE_TEXELS = 6
 EDGES_PER_ROW = 1024
 # Per corner patch (three convex rounded edges meeting): (ball centre, radius), (vertex, 0), and
@@ -23,6 +26,9 @@ VERTEX_EDGES = 4  # judged in the vertex shader (varyings); the rest per pixel (
 CORNERS_PER_TRIANGLE = 4  # a quad's half lies in the zones of all four of its corners
 TRIANGLE_TEXELS = 3
 TRIANGLES_PER_ROW = 2048
+# A concave edge folded by more than this (degrees) at a strip's end: the silhouette may run on
+# into it (_concave_ends); a triangulated surface's flatter folds are its curvature's noise.
+CONCAVE_END_DEG = 1.0
 
 
 def layout_defines():
@@ -57,7 +63,88 @@ def _edges(extract):
         verts.append(np.asarray(e.verts, np.int64)[keep] if e.verts is not None else np.full((len(keep), 2), -1))
     if not recs:
         return np.zeros((0, EDGE_TEXELS, 4), np.float32), np.zeros((0, 2), np.int64), np.zeros((0, 2), np.int64)
-    return np.concatenate(recs), np.concatenate(faces), np.concatenate(verts)
+    recs, verts = np.concatenate(recs), np.concatenate(verts)
+    recs[:, 2, 3], recs[:, 3, 3] = _concave_cuts(extract, recs, verts).T
+    recs[:, 4, 3], recs[:, 5, 3] = _concave_ends(extract, verts).T
+    return recs, np.concatenate(faces), verts
+
+
+def _concave_ends(extract, verts):
+    """(M, 2) float32: 1 at the ends (`verts`) where a concave edge of the mesh meets, folded by
+    more than CONCAVE_END_DEG, rounded or not (a bore's wall); else 0. The silhouette may run on
+    there into the concave edge's, behind the face, and the strip's end takes no half disc of its
+    own (rounded_outline.glsl's el_strip_part)."""
+    from . import native
+    d = extract.edge_data
+    out = np.zeros(verts.shape, np.float32)
+    if d is None or d.flags is None or not np.all(verts >= 0):
+        return out
+    concave = ((np.asarray(d.flags) & native.EDGE_CONCAVE) != 0) & (np.asarray(d.angles) > CONCAVE_END_DEG)
+    at = np.unique(np.asarray(d.edges, np.int64)[concave].reshape(-1))
+    out[np.isin(verts, at)] = 1.0
+    return out
+
+
+def _concave_cuts(extract, recs, verts):
+    """(M, 2) float32: per convex rounded edge (records `recs`, vertices `verts`) and end, the
+    fraction of the edge from that end along which a concave fillet meeting it there fills the
+    corner (docs/highlight_math.md, "The fillet's outline"). A concave rounded edge c at the
+    end's vertex that shares a face with the edge (one normal within SMOOTH_FOLD_DEG of one of
+    the edge's) has its fillet on that face up to its setback s = r tan(a/2) from c; the convex
+    fillet along the edge runs into it s / sin(theta) from the vertex, theta the angle between
+    the two edges. Up to there the concave fillet fills the corner, and its end arc lies in the
+    edge's other face, out over the line: the strip narrows by that much (rounded_outline.glsl's
+    el_strip_part), and the fillets' outline runs from the convex fillet's round the concave
+    one's end (the inside corner of a step's L-shaped end face). Signed by the face the arc
+    lies in: + N2's (the concave fillet on N1's face), - N1's. 0 where none meets; 1 at most."""
+    from .radius_clamp import SMOOTH_FOLD_DEG
+    cuts = np.zeros((len(recs), 2), np.float32)
+    cv, cp, cn, cs = [], [], [], []
+    for e in extract.edges.values():
+        if e.verts is None:
+            continue
+        keep = np.flatnonzero(~convex(e) & (e.radius > 0.0))
+        if not len(keep):
+            continue
+        n1, n2 = e.n1[keep].astype(np.float64), e.n2[keep].astype(np.float64)
+        cos_fold = np.einsum("ij,ij->i", n1, n2) / np.maximum(np.linalg.norm(n1, axis=1) * np.linalg.norm(n2, axis=1), 1e-30)
+        cos_half = np.sqrt(np.clip(0.5 * (1.0 + cos_fold), 1e-6, 1.0))
+        cv.append(np.asarray(e.verts, np.int64)[keep])
+        cp.append(np.stack([e.p0[keep], e.p1[keep]], axis=1).astype(np.float64))
+        cn.append(np.stack([n1, n2], axis=1))
+        cs.append(e.radius[keep] * np.sqrt(1.0 - cos_half * cos_half) / cos_half)
+    if not cv or not np.all(verts >= 0):
+        return cuts
+    cv, cp, cn, cs = np.concatenate(cv), np.concatenate(cp), np.concatenate(cn), np.concatenate(cs)
+    # The concave edges' ends by vertex: (vertex, concave edge, which end).
+    ends_v = cv.reshape(-1)
+    by_v = np.argsort(ends_v, kind="stable")
+    sorted_v = ends_v[by_v]
+    ev = verts.reshape(-1)  # the convex edges' ends, (M * 2,)
+    lo, hi = np.searchsorted(sorted_v, ev, "left"), np.searchsorted(sorted_v, ev, "right")
+    count = hi - lo
+    if not count.any():
+        return cuts
+    at = np.repeat(np.arange(len(ev)), count)                       # convex end
+    k = by_v[np.repeat(lo, count) + (np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count))]
+    j, jend = k // 2, k % 2                                         # concave edge, its end at the vertex
+    i, iend = at // 2, at % 2
+    p = recs[:, 2:4, :3].astype(np.float64)
+    here, there = p[i, iend], p[i, 1 - iend]
+    u = there - here
+    w = cp[j, 1 - jend] - cp[j, jend]
+    length = np.linalg.norm(u, axis=1)
+    sin_t = np.linalg.norm(np.cross(u, w), axis=1) / np.maximum(length * np.linalg.norm(w, axis=1), 1e-30)
+    en = recs[i, 0:2, :3].astype(np.float64)
+    unit = lambda n: n / np.maximum(np.linalg.norm(n, axis=-1, keepdims=True), 1e-30)  # noqa: E731
+    same = (np.einsum("nak,nbk->nab", unit(en), unit(cn[j])) > np.cos(np.radians(SMOOTH_FOLD_DEG))).any(axis=2)
+    cut = np.where(same.any(axis=1), np.minimum(cs[j] / np.maximum(sin_t, 1e-6) / np.maximum(length, 1e-30), 1.0), 0.0)
+    # The longest cut at each end, signed by the face its arc lies in (+: N2's, the fillet on N1's).
+    best = np.full(len(ev), -1.0)
+    np.maximum.at(best, at, cut)
+    top = (cut == best[at]) & (cut > 0.0)
+    cuts.reshape(-1)[at[top]] = np.where(same[top, 0], cut[top], -cut[top]).astype(np.float32)
+    return cuts
 
 
 def _segment_distance(points, p0, p1):

@@ -30,18 +30,24 @@ vec4 el_fillet_outline(vec3 na, vec3 nb, vec3 V, out vec3 C)
  * the edge's end p0 (0 where the edge is no silhouette there; -1 where it has no strip at all),
  * and `strip1` at p1; `dist`, the signed distance in pixels of s from the edge's image line
  * (positive on its faces' side), `along`, where its foot lies on the edge's image (0 and 1: the
- * ends), and `length_px`, the edge's image length in pixels. dist and along are affine on
- * screen: interpolated without perspective from a triangle's vertices, they are exact at every
- * pixel. A pixel takes the strip's width at its foot; past an end the strip ends in a half disc
- * of its width there, or of the edge's image length where that is shorter (el_in_strip): where
+ * ends), `length_px`, the edge's image length in pixels; per end, where a concave fillet meets
+ * the edge and fills the corner, `cut`, the fraction of the edge from that end the fillet
+ * reaches along it (rounded_outline.py's records), and `arc`, how far out over the line its end
+ * arc reaches at the vertex in pixels, negative where a concave edge meets the end
+ * (el_end_arc_px). dist and along are affine on screen: interpolated without perspective from
+ * a triangle's vertices, they are exact at every pixel. A pixel takes the strip's width at its foot; past an end the strip ends in a half disc
+ * of its width there, or of the edge's image length where that is shorter (el_strip_part): where
  * the outline turns away from the part's inside between two strips (a rim seen from above),
  * their ends leave a wedge that the moved outline, round there as the fillets' is, still passes
  * inside. Judged at the edge's own ends, the strip is the same on both its faces and at every
  * vertex of a triangle. A polygon's other triangles meet the line beyond the edge too (a gear's
  * face round its teeth): the strip runs along the edge alone, and its ends' half discs reach no
  * farther than its width. `nm`: el_normal_matrix(model). */
-float el_outline_strip(int e, vec2 s, mat3 nm, out float dist, out float along_t, out float strip1, out float length_px)
+float el_outline_strip(int e, vec2 s, mat3 nm, out float dist, out float along_t, out float strip1, out float length_px,
+                       out vec2 cut, out vec2 arc)
 {
+  cut = vec2(0.0);
+  arc = vec2(0.0);
   dist = 0.0;
   along_t = 0.0;
   strip1 = 0.0;
@@ -50,11 +56,13 @@ float el_outline_strip(int e, vec2 s, mat3 nm, out float dist, out float along_t
   ivec2 at = ivec2((e % EL_OUTLINE_EDGES_PER_ROW) * EL_OUTLINE_EDGE_TEXELS, e / EL_OUTLINE_EDGES_PER_ROW);
   vec4 t0 = texelFetch(outline_edges, at, 0);
   vec3 ma = t0.xyz, mb = texelFetch(outline_edges, at + ivec2(1, 0), 0).xyz;
-  vec3 o0 = texelFetch(outline_edges, at + ivec2(2, 0), 0).xyz, o1 = texelFetch(outline_edges, at + ivec2(3, 0), 0).xyz;
+  vec4 e0 = texelFetch(outline_edges, at + ivec2(2, 0), 0), e1 = texelFetch(outline_edges, at + ivec2(3, 0), 0);
+  vec3 o0 = e0.xyz, o1 = e1.xyz;
   float scale = el_radius_scale(model, ma, mb, o1 - o0); /* as the edge pass scales its radius */
   vec3 na = normalize(nm * ma), nb = normalize(nm * mb);
   vec3 w0 = (model * vec4(o0, 1.0)).xyz, w1 = (model * vec4(o1, 1.0)).xyz;
-  vec3 ta = texelFetch(outline_edges, at + ivec2(4, 0), 0).xyz, tb = texelFetch(outline_edges, at + ivec2(5, 0), 0).xyz;
+  vec4 t4 = texelFetch(outline_edges, at + ivec2(4, 0), 0), t5 = texelFetch(outline_edges, at + ivec2(5, 0), 0);
+  vec3 ta = t4.xyz, tb = t5.xyz;
   vec2 width = vec2(0.0);
   for (int end = 0; end < 2; end++) {
     /* Each end with the normals its faces are shaded with there, the vertex's own: the edges
@@ -95,20 +103,87 @@ float el_outline_strip(int e, vec2 s, mat3 nm, out float dist, out float along_t
   along_t = dot(s - s0, along) / (l * l);
   length_px = l;
   strip1 = width.y;
+  /* A concave fillet meeting the edge at an end: its end arc lies in the edge's other face,
+   * from the edge, `cut` of it from the vertex, round the inside corner (taken as a quarter
+   * circle of that radius); out of that face's side of the line, over the part's outline. How
+   * far out the arc's far end lies in pixels, across the line (el_strip_part), negative where
+   * a concave edge meets the end (el_end_arc_px). */
+  for (int end = 0; end < 2; end++) {
+    float c = end == 0 ? e0.w : e1.w, h = 0.0;
+    if (c != 0.0) {
+      float half_turn = end == 0 ? -0.5 : 0.5;
+      vec3 ea = normalize(nm * (ma + half_turn * ta)), eb = normalize(nm * (mb + half_turn * tb));
+      vec3 arc_face = c > 0.0 ? eb : ea, fillet_face = c > 0.0 ? ea : eb;
+      vec3 out_of_face = fillet_face - dot(fillet_face, arc_face) * arc_face;
+      vec3 at_end = end == 0 ? w0 : w1;
+      vec4 ce = frame.projection * (frame.view * vec4(at_end, 1.0));
+      vec4 co = frame.projection * (frame.view * vec4(at_end + out_of_face * (abs(c) * length(w1 - w0) / max(length(out_of_face), 1e-30)), 1.0));
+      vec2 q = (co.xy / co.w - ce.xy / ce.w) * 0.5 * frame.viewport.xy;
+      cut[end] = abs(c);
+      h = co.w > 0.0 ? max(-faces_side * (along.x * q.y - along.y * q.x) / l, 0.0) : 0.0;
+    }
+    arc[end] = (end == 0 ? t4.w : t5.w) > 0.0 ? -1.0 - h : h;
+  }
   return width.x;
 }
 
-/* Whether a pixel with these values of el_outline_strip lies in the strip (or its ends' half
- * discs), where the fillet's outline has moved in past it. */
-bool el_in_strip(float strip0, float strip1, float along_t, float length_px, float dist)
+/* Which part of its strip a pixel with these values of el_outline_strip lies in: EL_STRIP_BODY
+ * along the edge; past one of its ends, in the half disc of the strip's width there (of no more
+ * than the edge's image length: where a rim's image turns tightly its edges are shorter than
+ * the strip is wide, and a wider disc reaches past the next edges, whose strips narrow),
+ * EL_STRIP_LONE_DISC where no concave edge meets that end, else EL_STRIP_DISC; EL_STRIP_NEAR
+ * past an end within the strip's width there but not in that disc; else EL_STRIP_NONE.
+ * A disc fills the wedge where the outline turns away from the part between two strips (a rim
+ * seen from above), and a pixel there lies past the ends of both. Where the outline runs on
+ * from the strip into an edge the fillets do not move, the disc rounds the turn; but where a
+ * concave edge meets the end, the silhouette may run on into it, behind the face, and past the
+ * end lies face that the fillets keep (a step's riser seen from behind, ending at the floor):
+ * there the disc needs another strip's end near (el_past_outline). Where a concave fillet
+ * meets the edge at an end, the strip is narrower by how far the fillet's end arc lies out over
+ * the line (el_end_arc, over the `cut` fraction of the edge from that end). */
+const int EL_STRIP_NONE = 0, EL_STRIP_NEAR = 1, EL_STRIP_DISC = 2, EL_STRIP_BODY = 3, EL_STRIP_LONE_DISC = 4;
+
+/* el_outline_strip's `arc` at an end: the end arc's reach in pixels (>= 0), and whether a
+ * concave edge meets the end (the value then -1 - reach). */
+float el_end_arc_px(float arc)
 {
-  float strip = mix(strip0, strip1, clamp(along_t, 0.0, 1.0));
+  return arc >= 0.0 ? arc : -1.0 - arc;
+}
+
+/* How far the end arc of reach `arc` lies out over the line x of the edge from its end. */
+float el_end_arc(float x, float cut, float arc)
+{
+  float u = 1.0 - x / max(cut, 1e-6);
+  return u > 0.0 ? el_end_arc_px(arc) * (1.0 - sqrt(max(1.0 - u * u, 0.0))) : 0.0;
+}
+
+int el_strip_part(float strip0, float strip1, float along_t, float length_px, float dist, vec2 cut, vec2 arc)
+{
+  float a = clamp(along_t, 0.0, 1.0);
+  float strip = mix(strip0, strip1, a) - el_end_arc(a, cut.x, arc.x) - el_end_arc(1.0 - a, cut.y, arc.y);
+  if (!(strip > 0.0) || !(dist >= 0.0)) {
+    return EL_STRIP_NONE;
+  }
   float past = max(max(-along_t, along_t - 1.0), 0.0) * length_px; /* past its end */
-  /* Past its end a half disc, of no more than the edge's image length: where a rim's image
-   * turns tightly its edges are shorter than the strip is wide, and a wider disc reaches past
-   * the next edges, whose strips narrow. */
-  float reach = past > 0.0 ? min(strip, length_px) : strip;
-  return strip > 0.0 && dist >= 0.0 && dist * dist + past * past < reach * reach;
+  if (!(past > 0.0)) {
+    return dist < strip ? EL_STRIP_BODY : EL_STRIP_NONE;
+  }
+  float d2 = dist * dist + past * past, reach = min(strip, length_px);
+  bool lone = (along_t < 0.0 ? arc.x : arc.y) >= 0.0;
+  return d2 < reach * reach ? (lone ? EL_STRIP_LONE_DISC : EL_STRIP_DISC) : (d2 < strip * strip ? EL_STRIP_NEAR : EL_STRIP_NONE);
+}
+
+/* Whether a pixel lies past the rounded outline, from the el_strip_part of each strip it is in
+ * reach of: tallied as (in a strip's body, in a half disc, past an end). */
+bool el_past_outline(ivec3 tally)
+{
+  return tally.x > 0 || (tally.y > 0 && tally.z > 1);
+}
+
+void el_tally_strip(int part, inout ivec3 tally)
+{
+  tally += ivec3(part == EL_STRIP_BODY || part == EL_STRIP_LONE_DISC ? 1 : 0, part == EL_STRIP_DISC ? 1 : 0,
+                 part == EL_STRIP_DISC || part == EL_STRIP_NEAR || part == EL_STRIP_LONE_DISC ? 1 : 0);
 }
 
 /* The list of rounded edges `texel` (0 .. EL_OUTLINE_EDGES_PER_TRIANGLE / 4 - 1) of triangle
@@ -121,8 +196,13 @@ vec4 el_outline_edge_list(int tri, int texel)
 /* For the first four of triangle `tri`'s listed edges, at this vertex (clip position `clip`),
  * el_outline_strip's values (the strip at p0 returned), to be interpolated without perspective:
  * a triangle's first four edges (its own sides and the nearest) cost the vertex shader only. */
-vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out vec4 strip1, out vec4 length_px)
+vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out vec4 strip1, out vec4 length_px,
+                       out vec4 cut0, out vec4 cut1, out vec4 arc0, out vec4 arc1)
 {
+  cut0 = vec4(0.0);
+  cut1 = vec4(0.0);
+  arc0 = vec4(0.0);
+  arc1 = vec4(0.0);
   dist = vec4(0.0);
   along_t = vec4(0.0);
   strip1 = vec4(0.0);
@@ -140,10 +220,15 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
       continue;
     }
     float d, a, w1, l;
-    float w0 = el_outline_strip(e, s, nm, d, a, w1, l);
+    vec2 c, h;
+    float w0 = el_outline_strip(e, s, nm, d, a, w1, l, c, h);
     if (w0 < 0.0) {
       continue;
     }
+    cut0[k] = c.x;
+    cut1[k] = c.y;
+    arc0[k] = h.x;
+    arc1[k] = h.y;
     dist[k] = d;
     along_t[k] = a;
     strip1[k] = w1;
@@ -153,10 +238,11 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
   return strip0;
 }
 
-/* Whether pixel `s` (pixels) of triangle `tri` lies in the strip of one of its listed edges past
- * the first four, each judged in the fragment shader: a sliver of an n-gon's fan (a cylinder's
- * cap) lies in the reach of five or six rims' strips, and only such triangles list more. */
-bool el_in_more_strips(int tri, vec2 s)
+/* Adds to `tally` (el_past_outline) the strips of triangle `tri`'s listed edges past the first
+ * four, each judged in the fragment shader at pixel `s` (pixels): a sliver of an n-gon's fan (a
+ * cylinder's cap) lies in the reach of five or six rims' strips, and only such triangles list
+ * more. */
+void el_tally_more_strips(int tri, vec2 s, inout ivec3 tally)
 {
   mat3 nm = el_normal_matrix(model);
   for (int texel = 1; texel < EL_OUTLINE_EDGES_PER_TRIANGLE / 4; texel++) {
@@ -164,16 +250,16 @@ bool el_in_more_strips(int tri, vec2 s)
     for (int k = 0; k < 4; k++) {
       int e = int(list[k] + 0.5) - 1;
       if (e < 0) {
-        return false; /* the list is packed: nothing follows */
+        return; /* the list is packed: nothing follows */
       }
       float d, a, w1, l;
-      float w0 = el_outline_strip(e, s, nm, d, a, w1, l);
-      if (w0 >= 0.0 && el_in_strip(w0, w1, a, l, d)) {
-        return true;
+      vec2 c, h;
+      float w0 = el_outline_strip(e, s, nm, d, a, w1, l, c, h);
+      if (w0 >= 0.0) {
+        el_tally_strip(el_strip_part(w0, w1, a, l, d, c, h), tally);
       }
     }
   }
-  return false;
 }
 
 /* For each of triangle `tri`'s listed corner patches where exactly two of its three edges are

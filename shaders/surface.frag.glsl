@@ -11,18 +11,20 @@ void main()
 #ifdef EL_ROUNDED_OUTLINE
   /* The strips a rounded silhouette leaves out, and past a corner the ball's circle
    * (rounded_outline.glsl). */
+  ivec3 tally = ivec3(0);
   for (int k = 0; k < 4; k++) {
-    if (el_in_strip(outline_strip0[k], outline_strip1[k], outline_along[k], outline_length[k], outline_dist[k])) {
-      discard;
-    }
+    el_tally_strip(el_strip_part(outline_strip0[k], outline_strip1[k], outline_along[k], outline_length[k], outline_dist[k],
+                                 vec2(outline_cut0[k], outline_cut1[k]), vec2(outline_arc0[k], outline_arc1[k])),
+                   tally);
   }
 #ifdef EL_OUTLINE_MORE
   /* Only the triangles that list more than four edges are drawn by this variant: on llvmpipe
    * the check's code costs every fragment of the program, taken or not. */
-  if (el_in_more_strips(int(surface_tri + 0.5), gl_FragCoord.xy)) {
+  el_tally_more_strips(int(surface_tri + 0.5), gl_FragCoord.xy, tally);
+#endif
+  if (el_past_outline(tally)) {
     discard;
   }
-#endif
   for (int q = 0; q < 4; q++) {
     vec4 z = q == 0 ? outline_corner0 : (q == 1 ? outline_corner1 : (q == 2 ? outline_corner2 : outline_corner3));
     if (outline_ball[q] > 0.0 && z.z > 0.0 && z.w > 0.0 && dot(z.xy, z.xy) > outline_ball[q] * outline_ball[q]) {

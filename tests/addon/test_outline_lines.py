@@ -54,6 +54,15 @@ class OutlinePoint(unittest.TestCase):
         b = outline_lines.outline_moves(record((0, 0, 0), (1, 0, 0), NB, NA), np.eye(4), ortho((0.0, 0.6, 0.8)))
         np.testing.assert_allclose(a, b, atol=1e-6)
 
+    def test_no_move_where_a_concave_fillet_meets_the_end(self):
+        """A cut at p0 (a concave fillet fills the corner there: its end arc runs the outline
+        out round it): that end stays on the sharp edge, the other moves as before."""
+        rec = record((0, 0, 0), (1, 0, 0))
+        rec[0, 2, 3] = -0.1
+        moves = outline_lines.outline_moves(rec, np.eye(4), ortho((0.0, 0.6, 0.8)))
+        np.testing.assert_array_equal(moves[0], 0.0)
+        np.testing.assert_allclose(moves[1, 0], np.array([0.0, R, -R]) + R * np.array([0.0, -0.8, 0.6]), atol=1e-6)
+
     def test_no_move_where_both_faces_face_the_eye(self):
         moves = outline_lines.outline_moves(record((0, 0, 0), (1, 0, 0)), np.eye(4), ortho((0.0, -0.6, 0.8)))
         np.testing.assert_array_equal(moves, 0.0)

@@ -16,6 +16,7 @@ from small_meshes import box, edge_frame, mesh
 rounded_outline = addon_module("rounded_outline")
 edge_choice = addon_module("edge_choice")
 corner_patches = addon_module("corner_patches")
+native = addon_module("native")
 
 
 def extract_of(positions, edges, polys, tris, rounded, radius=0.1, corners=False):
@@ -29,9 +30,15 @@ def extract_of(positions, edges, polys, tris, rounded, radius=0.1, corners=False
     if corners:
         e.corners = corner_patches.find(edges, positions, normals, np.ones(len(edges), bool), np.asarray(rounded, bool),
                                         np.full(len(edges), radius, np.float32))
+    # The library's classes: convex where N1 x N2 runs along the edge (N1's face runs p0 -> p1).
+    n1, n2 = normals[:, :3].astype(float), normals[:, 3:].astype(float)
+    along = np.einsum("ij,ij->i", np.cross(n1, n2), positions[edges[:, 1]] - positions[edges[:, 0]])
+    flags = np.where(along >= 0.0, native.EDGE_CONVEX, native.EDGE_CONCAVE)
+    angles = np.degrees(np.arccos(np.clip(np.einsum("ij,ij->i", n1, n2), -1.0, 1.0)))
+    data = types.SimpleNamespace(polygons=polys, tri_verts=tris, flags=flags, angles=angles, edges=edges)
     return types.SimpleNamespace(
         slot_triangles={0: np.arange(len(tris))}, corner_pos=positions[tris.reshape(-1)],
-        edges={0: e} if len(sel) else {}, edge_data=types.SimpleNamespace(polygons=polys, tri_verts=tris)), sel
+        edges={0: e} if len(sel) else {}, edge_data=data), sel
 
 
 def grid_box(n):
@@ -222,6 +229,33 @@ class RoundedOutline(unittest.TestCase):
         # The records hold the convex edges' ends; none is the reflex edge's.
         ends = {tuple(sorted(map(tuple, r[2:4, :3].tolist()))) for r in recs}
         self.assertNotIn(tuple(sorted([tuple(positions[3]), tuple(positions[3 + n])])), ends)
+
+    def test_convex_ends_at_a_concave_edge(self):
+        """The L-shaped prism rounded at 0.1: the four convex edges that meet the reflex edge's
+        ends (along the L's floor and riser, top and bottom) share a wall with it, square to it.
+        Its fillet fills the corner 0.1 along each (its setback, r tan 45 deg), a tenth of their
+        unit length, and its end arc lies in their other face (the cap): that cut, signed by
+        the face, and the end's mark (a concave edge meets it) are in their records; every other
+        end has neither."""
+        outline = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
+        n = len(outline)
+        verts = [(x, y, 0.0) for x, y in outline] + [(x, y, 1.0) for x, y in outline]
+        polys_list = [list(range(n))[::-1], [i + n for i in range(n)]]
+        polys_list += [[i, (i + 1) % n, (i + 1) % n + n, i + n] for i in range(n)]
+        positions, edges, polys, tris = mesh(verts, polys_list)
+        ex, sel = extract_of(positions, edges, polys, tris, np.ones(len(edges), bool))
+        self.assertEqual([set(e) for e in edges[ex.edge_data.flags == native.EDGE_CONCAVE]], [{3, 3 + n}])
+        recs, _, verts_of = rounded_outline._edges(ex)
+        cuts, marks = recs[:, 2:4, 3], recs[:, 4:6, 3]
+        at_reflex = np.isin(verts_of, (3, 3 + n))
+        self.assertEqual(int(at_reflex.sum()), 4)
+        np.testing.assert_allclose(np.abs(cuts[at_reflex]), 0.1, rtol=1e-5)
+        np.testing.assert_array_equal(cuts[~at_reflex], 0.0)
+        np.testing.assert_array_equal(marks, at_reflex.astype(np.float32))
+        # The arc's face: the cap, the edge's face that is not the wall it shares.
+        cap = np.abs(recs[:, 0:2, 2]) > 0.5  # N1, N2 along z
+        for i, k in zip(*np.nonzero(at_reflex)):
+            self.assertEqual(cuts[i, k] > 0.0, bool(cap[i, 1]), f"edge {i} end {k}")
 
     def test_nothing_rounded_lists_nothing(self):
         positions, edges, polys, tris = box()

@@ -249,5 +249,99 @@ class NgonCap(unittest.TestCase):
             self.assertLess(past.sum(), bound, f"{width} px")
 
 
+STEP_CAMERA = np.array((-3.0, -4.0, 2.5))
+
+
+def step_render(width_px, fillet):
+    """bench/parts.py's step (floor z = 0 for x in 0..1, riser x = 0 up to the top z = 1 at x < 0,
+    its L-shaped ends at y = +-1), rounded at width_px pixels, seen from behind its riser on a
+    transparent film: the end face y = -1 and the floor face the eye, the riser does not. The
+    silhouette between the end face and the riser ends at the L's inside corner, where it runs on
+    into the concave edge's, behind the end face. Its record, with the exactly circular fillets
+    (highlights off) or with EdgeLight's."""
+    helpers.empty_scene(*RESOLUTION, samples=64 if fillet else 8)
+    helpers.add_camera(tuple(STEP_CAMERA))
+    helpers.add_sun((0.5, -0.8, 0.6), 4.0)
+    scene = bpy.context.scene
+    scene.render.film_transparent = True
+    verts, faces = gt_scenes.built_mesh("l_step")
+    ob = zoo.mesh_object("Step", verts.tolist(), faces)
+    zoo.smooth_with_sharp_creases(ob.data)
+    mat = zoo.material("StepMaterial", (0.8, 0.8, 0.8))
+    mat.edgelight.radius = zoo.radius_at_width(width_px, STEP_CAMERA, RESOLUTION[0])
+    ob.data.materials.append(mat)
+    if fillet:
+        fillets.add_fillets(scene, mat.edgelight.radius, 32, exact=True)
+    scene.edgelight.highlights = not fillet
+    return helpers.render()
+
+
+def framed_step(width_px, fillet):
+    """The step in the ground truth's framing (bench/gt_scenes.py), rounded at width_px pixels, on
+    a transparent film: its record and the world positions of its two inside corners. There the
+    end faces turn away, and each corner is where two silhouettes (the end face's with the floor
+    and with the riser) meet the concave edge, which the eye sees."""
+    scene = gt_scenes.open_scene("l_step", 0.01, 1, gt_scenes.RESOLUTION)
+    radius = width_px / gt_scenes.px_per_unit_at_centre(scene)
+    scene = gt_scenes.open_scene("l_step", radius, 64 if fillet else 8, gt_scenes.RESOLUTION)
+    scene.render.film_transparent = True
+    verts, _ = gt_scenes.built_mesh("l_step")
+    ob = next(o for o in scene.objects if o.type == 'MESH')
+    inside = [ob.matrix_world @ ob.data.vertices[i].co for i in np.flatnonzero((np.abs(verts[:, 0]) < 1e-6) & (np.abs(verts[:, 2]) < 1e-6))]
+    if fillet:
+        fillets.add_fillets(scene, radius, 32, exact=True)
+    scene.edgelight.highlights = not fillet
+    return helpers.render(), [tuple(v) for v in inside]
+
+
+def near_corners(rec, corners, radius_px):
+    shape = np.asarray(rec["pixels"]).shape[:2]
+    yy, xx = np.mgrid[0:shape[0], 0:shape[1]] + 0.5
+    return np.any([(xx - c[0]) ** 2 + (yy - c[1]) ** 2 < radius_px ** 2 for c in helpers.project(rec, corners)], axis=0)
+
+
+class ConcaveEnds(unittest.TestCase):
+    def test_a_silhouette_running_on_into_a_concave_edge_keeps_the_face_past_its_end(self):
+        """Past the end of the riser's silhouette lies the end face's lower part, which the
+        fillets keep (the concave fillet fills the L's inside corner; docs/highlight_math.md,
+        "The fillet's outline"). The strip's end took a half disc of it, and behind the end face
+        is the part's inside, which is not drawn: a hole to the background. Coverage lost
+        against the fillets within 3 r of the corner's image, and past them in the same window."""
+        for width in (4.0, 8.0):
+            rec = step_render(width, True)
+            ref = np.asarray(rec["pixels"])[..., 3].astype(np.float64)
+            el = np.asarray(step_render(width, False)["pixels"])[..., 3].astype(np.float64)
+            corner = helpers.project(rec, [(0.0, -1.0, 0.0)])[0]
+            yy, xx = np.mgrid[0:ref.shape[0], 0:ref.shape[1]]
+            near = (xx - corner[0]) ** 2 + (yy - corner[1]) ** 2 < (3.0 * width) ** 2
+            lost = float(np.clip(ref - el, 0.0, None)[near].sum())
+            past = float(np.clip(el - ref, 0.0, None)[near].sum())
+            print(f"{width} px: at the inside corner, coverage lost against the fillets {lost:.1f} pixels, "
+                  f"past them {past:.1f}")
+            self.assertGreater(ref[near].sum(), 0.5 * near.sum(), "the corner is in view, inside the part")
+            # Measured: 0.0 and 0.0 pixels lost (none past); 3.5 and 14.7 lost with the disc.
+            self.assertLess(lost, 0.5 * width)
+
+    def test_where_two_silhouettes_meet_a_concave_edge_the_fillet_rounds_the_inside_corner(self):
+        """Seen with its end faces turned away, the step's outline has a notch at each inside
+        corner, where the floor's and the riser's silhouettes meet the concave edge. The concave
+        fillet's end rounds the notch out: the strips of both narrow towards the corner by how far
+        its end arc lies out over their lines (docs/highlight_math.md, "The fillet's outline").
+        Coverage lost against the fillets and past them within 3 r of the corners' images."""
+        for width in (4.0, 8.0):
+            rec, corners = framed_step(width, True)
+            ref = np.asarray(rec["pixels"])[..., 3].astype(np.float64)
+            el = np.asarray(framed_step(width, False)[0]["pixels"])[..., 3].astype(np.float64)
+            near = near_corners(rec, corners, 3.0 * width)
+            lost = float(np.clip(ref - el, 0.0, None)[near].sum())
+            past = float(np.clip(el - ref, 0.0, None)[near].sum())
+            print(f"{width} px: at the notches, coverage lost against the fillets {lost:.1f} pixels, past them {past:.1f}")
+            self.assertGreater(near.sum(), 50, "the corners are in view")
+            # Measured: 0.8 and 0.6 pixels lost, 2.1 and 10.1 past; 4.0 and 12.2 lost (0.4 and
+            # 2.0 past) with the strips at full width to the corner.
+            self.assertLess(lost, 0.25 * width)
+            self.assertLess(past, 1.5 * width)
+
+
 if __name__ == "__main__":
     unittest.main()
