@@ -138,7 +138,7 @@ float el_outline_strip(int e, vec2 s, mat3 nm, out float dist, out float along_t
  * from the strip into an edge the fillets do not move, the disc rounds the turn; but where a
  * concave edge meets the end, the silhouette may run on into it, behind the face, and past the
  * end lies face that the fillets keep (a step's riser seen from behind, ending at the floor):
- * there the disc needs another strip's end near (el_past_outline). Where a concave fillet
+ * there the disc needs another strip's end at the vertex (el_past_outline). Where a concave fillet
  * meets the edge at an end, the strip is narrower by how far the fillet's end arc lies out over
  * the line (el_end_arc, over the `cut` fraction of the edge from that end). */
 const int EL_STRIP_NONE = 0, EL_STRIP_NEAR = 1, EL_STRIP_DISC = 2, EL_STRIP_BODY = 3, EL_STRIP_LONE_DISC = 4;
@@ -157,8 +157,10 @@ float el_end_arc(float x, float cut, float arc)
   return u > 0.0 ? el_end_arc_px(arc) * (1.0 - sqrt(max(1.0 - u * u, 0.0))) : 0.0;
 }
 
-int el_strip_part(float strip0, float strip1, float along_t, float length_px, float dist, vec2 cut, vec2 arc)
+int el_strip_part(float strip0, float strip1, float along_t, float length_px, float dist, vec2 cut, vec2 arc,
+                  out float end_px)
 {
+  end_px = 0.0;
   float a = clamp(along_t, 0.0, 1.0);
   float strip = mix(strip0, strip1, a) - el_end_arc(a, cut.x, arc.x) - el_end_arc(1.0 - a, cut.y, arc.y);
   if (!(strip > 0.0) || !(dist >= 0.0)) {
@@ -169,21 +171,47 @@ int el_strip_part(float strip0, float strip1, float along_t, float length_px, fl
     return dist < strip ? EL_STRIP_BODY : EL_STRIP_NONE;
   }
   float d2 = dist * dist + past * past, reach = min(strip, length_px);
+  end_px = sqrt(d2);
   bool lone = (along_t < 0.0 ? arc.x : arc.y) >= 0.0;
   return d2 < reach * reach ? (lone ? EL_STRIP_LONE_DISC : EL_STRIP_DISC) : (d2 < strip * strip ? EL_STRIP_NEAR : EL_STRIP_NONE);
 }
 
-/* Whether a pixel lies past the rounded outline, from the el_strip_part of each strip it is in
- * reach of: tallied as (in a strip's body, in a half disc, past an end). */
-bool el_past_outline(ivec3 tally)
+/* Two strips' ends at one vertex lie equally far from a pixel (exactly: both are affine on
+ * screen, from the same point); the ends of a chain's next edges do not. */
+const float EL_SAME_END_PX = 1.0 / 16.0;
+
+/* Adds a strip's el_strip_part, and its end_px, to a pixel's tally: x, 1 once the pixel lies in
+ * a strip's body or a lone disc; y, how many ends it lies past within their strip's width, the
+ * first four kept in `ends` (their distances, negated where the pixel lies in that end's disc). */
+void el_tally_strip(int part, float end_px, inout ivec2 tally, inout vec4 ends)
 {
-  return tally.x > 0 || (tally.y > 0 && tally.z > 1);
+  if (part == EL_STRIP_BODY || part == EL_STRIP_LONE_DISC) {
+    tally.x = 1;
+  }
+  else if ((part == EL_STRIP_DISC || part == EL_STRIP_NEAR) && tally.y < 4) {
+    ends[tally.y] = part == EL_STRIP_DISC ? -end_px : end_px;
+    tally.y++;
+  }
 }
 
-void el_tally_strip(int part, inout ivec3 tally)
+/* Whether a pixel lies past the rounded outline, from its tally: in a strip's body or lone
+ * disc, or in a disc whose end meets another strip's end at the vertex, the pixel past both (a
+ * wedge between them). Where a chain's edges are shorter than their strips are wide (a bolt
+ * hole's rim seen obliquely), a pixel past the silhouette's last end also lies past the ends of
+ * the edges before it, at other vertices: those do not count. */
+bool el_past_outline(ivec2 tally, vec4 ends)
 {
-  tally += ivec3(part == EL_STRIP_BODY || part == EL_STRIP_LONE_DISC ? 1 : 0, part == EL_STRIP_DISC ? 1 : 0,
-                 part == EL_STRIP_DISC || part == EL_STRIP_NEAR || part == EL_STRIP_LONE_DISC ? 1 : 0);
+  if (tally.x > 0) {
+    return true;
+  }
+  for (int i = 0; i < tally.y; i++) {
+    for (int j = i + 1; j < tally.y; j++) {
+      if ((ends[i] < 0.0 || ends[j] < 0.0) && abs(abs(ends[i]) - abs(ends[j])) < EL_SAME_END_PX) {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 /* The list of rounded edges `texel` (0 .. EL_OUTLINE_EDGES_PER_TRIANGLE / 4 - 1) of triangle
@@ -238,11 +266,11 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
   return strip0;
 }
 
-/* Adds to `tally` (el_past_outline) the strips of triangle `tri`'s listed edges past the first
+/* Adds to `tally` and `ends` (el_tally_strip) the strips of triangle `tri`'s listed edges past the first
  * four, each judged in the fragment shader at pixel `s` (pixels): a sliver of an n-gon's fan (a
  * cylinder's cap) lies in the reach of five or six rims' strips, and only such triangles list
  * more. */
-void el_tally_more_strips(int tri, vec2 s, inout ivec3 tally)
+void el_tally_more_strips(int tri, vec2 s, inout ivec2 tally, inout vec4 ends)
 {
   mat3 nm = el_normal_matrix(model);
   for (int texel = 1; texel < EL_OUTLINE_EDGES_PER_TRIANGLE / 4; texel++) {
@@ -256,7 +284,9 @@ void el_tally_more_strips(int tri, vec2 s, inout ivec3 tally)
       vec2 c, h;
       float w0 = el_outline_strip(e, s, nm, d, a, w1, l, c, h);
       if (w0 >= 0.0) {
-        el_tally_strip(el_strip_part(w0, w1, a, l, d, c, h), tally);
+        float end_px;
+        int part = el_strip_part(w0, w1, a, l, d, c, h, end_px);
+        el_tally_strip(part, end_px, tally, ends);
       }
     }
   }

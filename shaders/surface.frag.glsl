@@ -11,18 +11,20 @@ void main()
 #ifdef EL_ROUNDED_OUTLINE
   /* The strips a rounded silhouette leaves out, and past a corner the ball's circle
    * (rounded_outline.glsl). */
-  ivec3 tally = ivec3(0);
+  ivec2 tally = ivec2(0);
+  vec4 ends = vec4(0.0);
   for (int k = 0; k < 4; k++) {
-    el_tally_strip(el_strip_part(outline_strip0[k], outline_strip1[k], outline_along[k], outline_length[k], outline_dist[k],
-                                 vec2(outline_cut0[k], outline_cut1[k]), vec2(outline_arc0[k], outline_arc1[k])),
-                   tally);
+    float end_px;
+    int part = el_strip_part(outline_strip0[k], outline_strip1[k], outline_along[k], outline_length[k], outline_dist[k],
+                             vec2(outline_cut0[k], outline_cut1[k]), vec2(outline_arc0[k], outline_arc1[k]), end_px);
+    el_tally_strip(part, end_px, tally, ends);
   }
 #ifdef EL_OUTLINE_MORE
   /* Only the triangles that list more than four edges are drawn by this variant: on llvmpipe
    * the check's code costs every fragment of the program, taken or not. */
-  el_tally_more_strips(int(surface_tri + 0.5), gl_FragCoord.xy, tally);
+  el_tally_more_strips(int(surface_tri + 0.5), gl_FragCoord.xy, tally, ends);
 #endif
-  if (el_past_outline(tally)) {
+  if (el_past_outline(tally, ends)) {
     discard;
   }
   for (int q = 0; q < 4; q++) {

@@ -205,12 +205,13 @@ class StripEnds(unittest.TestCase):
         lost = np.clip(ref - flange_coverage(8.0, False), 0.0, None)
         window = sum(np.roll(np.roll(lost, dy, 0), dx, 1) for dy in (-1, 0, 1) for dx in (-1, 0, 1))
         print(f"coverage lost against the fillets: {lost.sum():.1f} pixels, {window.max():.2f} in the worst 3 x 3")
-        # Measured: 39.2 pixels, 5.75 in the worst 3 x 3 (30.4 and 4.0 when a triangle listed
-        # four strips at most, and left a bolt hole's farther ones out); 58.7 and 8.0 with discs
-        # of the strip's full width.
+        # Measured: 33.0 pixels, 5.15 in the worst 3 x 3; 34.8 and 5.75 where a disc counted
+        # with any other strip's end near, not only one at its vertex (the rim's edges before
+        # the last are shorter than the strip is wide); 39.2 and 5.75 with every disc; 58.7 and
+        # 8.0 with discs of the strip's full width.
         self.assertGreater(ref.sum(), 10000.0, "the flange is in view")
-        self.assertLess(lost.sum(), 45.0)
-        self.assertLess(window.max(), 6.0)
+        self.assertLess(lost.sum(), 40.0)
+        self.assertLess(window.max(), 5.5)
 
 
 def cylinder_coverage(width_px, fillet):
