@@ -7,7 +7,7 @@ import bpy
 import numpy as np
 
 
-def add_fillets(s, radius, segments, exact=False):
+def add_fillets(s, radius, segments, exact=False, harden=True):
     """A circular fillet of radius r on every edge EdgeLight rounds (faces meeting at more than
     the material's angle). The Bevel modifier's OFFSET is the distance from the edge to where the
     fillet meets each face, r tan(a / 2) for a turn a between the face normals; one modifier has
@@ -15,7 +15,11 @@ def add_fillets(s, radius, segments, exact=False):
 
     The modifier's profile 0.5 is a circle only at 90-degree folds (elsewhere a quarter circle
     mapped into the corner's skewed frame: an ellipse's arc); with `exact`, the modifier is
-    applied and its fillets' vertices are moved onto the circles (make_circular)."""
+    applied and its fillets' vertices are moved onto the circles (make_circular). Hardened
+    normals keep a large flat face flat next to its fillet (averaged with the fillet's first
+    segment, its corners would tilt it); on smooth-shaded curved faces Blender 3.4 and 4.1+
+    harden differently (a ring's fillet seen along its edges), and harden=False leaves the
+    fillets' normals to the mesh's own smoothing."""
     for ob in [o for o in s.objects if o.type == 'MESH']:
         me = ob.data
         threshold = ob.active_material.edgelight.angle if ob.active_material else math.radians(30.0)
@@ -45,7 +49,7 @@ def add_fillets(s, radius, segments, exact=False):
         mod.segments = segments
         mod.profile = 0.5
         mod.limit_method = 'WEIGHT'
-        mod.harden_normals = True
+        mod.harden_normals = harden
         mod.miter_outer = 'MITER_ARC'
         # Bevel stops a fillet where it would overlap its neighbours; on a dense mesh (fandisk's
         # creases are chains of short edges between thin triangles) that cut every fillet short of

@@ -77,6 +77,8 @@ def open_scene(name, radius, samples, resolution):
         if hasattr(me, "use_auto_smooth"):  # 3.x: smooth faces, sharp creases (as the fandisk sample)
             me.use_auto_smooth = True
             me.auto_smooth_angle = CREASE
+        else:  # 4.1+ has no auto smooth: the same creases marked sharp
+            mark_creases_sharp(me)
         for mat in ob.data.materials:
             me.materials.append(mat)
         ob.data = me
@@ -85,6 +87,18 @@ def open_scene(name, radius, samples, resolution):
         mat.edgelight.radius = radius
         mat.edgelight.K = 1.0
     return s
+
+
+def mark_creases_sharp(me):
+    """Marks sharp the edges whose faces fold by more than CREASE, and the open ones: auto
+    smooth's rule, on Blender 4.1+ (which has none)."""
+    bm = bmesh.new()
+    bm.from_mesh(me)
+    sharp = [len(e.link_faces) != 2 or e.calc_face_angle(0.0) > CREASE for e in bm.edges]
+    bm.free()
+    attr = me.attributes.get("sharp_edge") or me.attributes.new("sharp_edge", 'BOOLEAN', 'EDGE')
+    attr.data.foreach_set("value", sharp)
+    me.update()
 
 
 def edgelight_scene(resolution, samples):

@@ -36,13 +36,13 @@ float el_footprint_reach(vec2 n)
  * so its axis is square to both normals: it is taken as the edge's direction turned as N1 x N2
  * turns away from its value at the mean normals (el_arc projects the normals square to it).
  * Where neither normal turns, the frame is the edge's own, exactly. */
-void el_edge_frame(float t, out vec3 E, out vec3 n1, out vec3 n2)
+void el_edge_frame_at(float t, out vec3 E, out vec3 n1, out vec3 n2)
 {
   E = edge_dir;
   n1 = edge_n1;
   n2 = edge_n2;
   if (edge_turn1 != vec3(0.0) || edge_turn2 != vec3(0.0)) {
-    float d = clamp(t, 0.0, 1.0) - 0.5;
+    float d = t - 0.5;
     n1 = el_safe_normalize(edge_n1 + d * edge_turn1);
     n2 = el_safe_normalize(edge_n2 + d * edge_turn2);
     /* Over |N1 x N2| = sin(fold) at most, so the turn the cross product gives the axis fades
@@ -53,6 +53,11 @@ void el_edge_frame(float t, out vec3 E, out vec3 n1, out vec3 n2)
     float sg = dot(a, edge_dir) < 0.0 ? -1.0 : 1.0;
     E = el_safe_normalize(el_safe_normalize(edge_dir) + (cross(n1, n2) - a) * (sg / den));
   }
+}
+
+void el_edge_frame(float t, out vec3 E, out vec3 n1, out vec3 n2)
+{
+  el_edge_frame_at(clamp(t, 0.0, 1.0), E, n1, n2);
 }
 
 /* Arc normal at angle u from N1. */

@@ -54,9 +54,10 @@ vec2 el_quad_sides(vec3 w0, vec3 w1, vec4 c0, vec4 c1, vec2 across, float reach)
   float turn = 2.0 * asin(min(0.5 * length(V1 - V0), 1.0));
   float s_min = max(min(length(cross(E, V0)), length(cross(E, V1))), 1e-3);
   /* Between the ends the arc turns with its faces' shading normals (el_edge_frame): the band
-   * moves by about that turn, in radians, times its reach. */
+   * moves by about that turn, in radians, times its reach; a pixel may take the frame of a
+   * point up to half an edge past either end (edge_band_pixel.glsl, along the line): twice. */
   float frame_turn = max(length(edge_turn1), length(edge_turn2));
-  float margin = reach * min(4.0 * turn / s_min + frame_turn, 1.0) + 1.0 / 32.0;
+  float margin = reach * min(4.0 * turn / s_min + 2.0 * frame_turn, 1.0) + 1.0 / 32.0;
   float lo = clamp(min(b0.x, b1.x) - margin, -reach, reach);
   return vec2(lo, clamp(max(b0.y, b1.y) + margin, lo, reach));
 }

@@ -3,6 +3,23 @@
  * really lies, and the pixel is shaded with the part of the arc whose image it covers. Needs
  * highlight_arc.glsl, edge_shading.glsl and edge_band.glsl. */
 
+/* The band's arc at line parameter t (el_edge_frame_at) seen along V from edge point X: E, |E x V|
+ * and the band's ends across the line in pixels. */
+ElArc el_band_at(float t, vec3 X, vec3 V, float world_per_px, out vec3 E, out float s, out vec2 ends)
+{
+  vec3 n1, n2;
+  el_edge_frame_at(t, E, n1, n2);
+  ElArc g = el_arc(E, n1, n2, V);
+  s = sqrt(dot(g.view, g.view)); /* |E x V| */
+  vec3 P = el_safe_normalize(cross(el_safe_normalize(E), V));
+  /* Which way P points on screen (the sign of its image along edge_screen's normal). */
+  vec4 q0 = frame.projection * (frame.view * vec4(X, 1.0));
+  vec4 q1 = frame.projection * (frame.view * vec4(X + P * world_per_px, 1.0));
+  float side = dot((q1.xy / q1.w - q0.xy / q0.w) * frame.viewport.xy, edge_screen.zw) < 0.0 ? -1.0 : 1.0;
+  ends = el_band_ends(g, P, edge_fold) * (side * edge_radius / world_per_px);
+  return g;
+}
+
 /* Premultiplied (W Is, W) of the pixel whose centre is `pc`, at edge point X seen along unit V;
  * `across`: the pixel centre's distance from the edge line in pixels (along edge_screen.zw).
  * Zero where the pixel shows none of the band. The pixel is a square: its footprint across the
@@ -14,20 +31,37 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
 {
   share1 = 0.5;
   pixel1 = 0.5;
-  vec3 E, n1, n2;
-  el_edge_frame(edge_t, E, n1, n2);
-  ElArc g = el_arc(E, n1, n2, V);
-  float s = sqrt(dot(g.view, g.view)); /* |E x V| */
+  vec3 E;
+  float s;
+  vec2 ends;
+  ElArc g = el_band_at(edge_t, X, V, world_per_px, E, s, ends);
   if (!(g.width > 0.0) || !(s > 0.0)) {
     return vec4(0.0);
   }
   float ramp = el_axial_ramp(s);
-  vec3 P = el_safe_normalize(cross(el_safe_normalize(E), V));
-  /* Which way P points on screen (the sign of its image along edge_screen's normal). */
-  vec4 q0 = frame.projection * (frame.view * vec4(X, 1.0));
-  vec4 q1 = frame.projection * (frame.view * vec4(X + P * world_per_px, 1.0));
-  float side = dot((q1.xy / q1.w - q0.xy / q0.w) * frame.viewport.xy, edge_screen.zw) < 0.0 ? -1.0 : 1.0;
-  vec2 ends = el_band_ends(g, P, edge_fold) * (side * edge_radius / world_per_px);
+  /* Along the line (docs/highlight_math.md, "Along the line"): the fillet's point of normal N
+   * lies fold r (N - C) from the edge, and where the edge is seen obliquely that offset's image
+   * runs along the line too, by -fold r ((N - C).V)(E.V) / |E x V|. So the pixel sees the
+   * cross-section of the edge's point dt = fold r ((N - C).V)(E.V) / (|E x V|^2 |edge|) on from
+   * its foot, N the normal of the arc's point its centre sees. That matters where the normals
+   * turn along the edge (a ring seen nearly along its edges, where its image turns): there the
+   * band takes the frame of that point, the normals turned on past the edge's ends as they turn
+   * along it (to half an edge: the next edges' own bands take over). Not at a silhouette, whose
+   * band's horizon is the outline. */
+  if ((edge_turn1 != vec3(0.0) || edge_turn2 != vec3(0.0)) && edge_far.w > 0.5) {
+    float f = clamp((across - ends.x) / (ends.y - ends.x), 0.0, 1.0);
+    ElArc seen = el_sub_arc(g, f, f);
+    vec3 C = (g.a1 + el_arc_normal(g, g.alpha)) / max(1.0 + cos(g.alpha), 1e-3);
+    float along = dot(el_arc_normal(seen, seen.vis.lo) - C, V) * dot(el_safe_normalize(E), V);
+    float t = clamp(edge_t + edge_fold * edge_radius * along / (s * s * max(length(edge_dir), 1e-30)), -0.5, 1.5);
+    if (abs(t - edge_t) > 1e-4) {
+      X += (t - edge_t) * edge_dir;
+      g = el_band_at(t, X, V, world_per_px, E, s, ends);
+      if (!(g.width > 0.0) || !(s > 0.0)) {
+        return vec4(0.0);
+      }
+    }
+  }
   float b0 = min(ends.x, ends.y), b1 = max(ends.x, ends.y);
   /* The band's ends on the face this pixel lies over (band_ends.py): the pixel's centre on the
    * body's side of each cut. Two bands meeting on a cut then split its pixels exactly (a
