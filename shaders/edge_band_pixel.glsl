@@ -34,26 +34,30 @@ vec4 el_band_pixel(vec2 pc, vec3 X, vec3 V, float world_per_px, float across, ou
   vec3 E;
   float s;
   vec2 ends;
-  ElArc g = el_band_at(edge_t, X, V, world_per_px, E, s, ends);
+  ElArc g = el_band_at(clamp(edge_t, 0.0, 1.0), X, V, world_per_px, E, s, ends);
   if (!(g.width > 0.0) || !(s > 0.0)) {
     return vec4(0.0);
   }
   float ramp = el_axial_ramp(s);
   /* Along the line (docs/highlight_math.md, "Along the line"): the fillet's point of normal N
-   * lies fold r (N - C) from the edge, and where the edge is seen obliquely that offset's image
-   * runs along the line too, by -fold r ((N - C).V)(E.V) / |E x V|. So the pixel sees the
-   * cross-section of the edge's point dt = fold r ((N - C).V)(E.V) / (|E x V|^2 |edge|) on from
-   * its foot, N the normal of the arc's point its centre sees. That matters where the normals
+   * lies Y = fold r (N - C) from the edge point whose cross-section it is, and where the edge is
+   * seen obliquely Y's image runs along the line too. The pixel's foot is on the line of the
+   * edge D (length L), so the point it sees is that of the cross-section at
+   * t' = t + ((Y.V)(D.V) - Y.D) / (L |D x V|^2), N the normal of the arc's point its centre
+   * sees (Y.D: the frame turns off D where the normals turn). That matters where the normals
    * turn along the edge (a ring seen nearly along its edges, where its image turns): there the
-   * band takes the frame of that point, the normals turned on past the edge's ends as they turn
-   * along it (to half an edge: the next edges' own bands take over). Not at a silhouette, whose
-   * band's horizon is the outline. */
+   * band takes the frame at t', the normals turned on past the edge's ends as they turn along
+   * it, to half an edge (the next edges' own bands take over). Not at a silhouette, whose band's
+   * horizon is the outline. */
   if ((edge_turn1 != vec3(0.0) || edge_turn2 != vec3(0.0)) && edge_far.w > 0.5) {
     float f = clamp((across - ends.x) / (ends.y - ends.x), 0.0, 1.0);
     ElArc seen = el_sub_arc(g, f, f);
     vec3 C = (g.a1 + el_arc_normal(g, g.alpha)) / max(1.0 + cos(g.alpha), 1e-3);
-    float along = dot(el_arc_normal(seen, seen.vis.lo) - C, V) * dot(el_safe_normalize(E), V);
-    float t = clamp(edge_t + edge_fold * edge_radius * along / (s * s * max(length(edge_dir), 1e-30)), -0.5, 1.5);
+    vec3 Y = edge_fold * edge_radius * (el_arc_normal(seen, seen.vis.lo) - C);
+    float L = length(edge_dir);
+    vec3 D = edge_dir / max(L, 1e-30);
+    float dv = dot(D, V), sd2 = max(1.0 - dv * dv, 1e-6);
+    float t = clamp(edge_t + (dot(Y, V) * dv - dot(Y, D)) / (max(L, 1e-30) * sd2), -0.5, 1.5);
     if (abs(t - edge_t) > 1e-4) {
       X += (t - edge_t) * edge_dir;
       g = el_band_at(t, X, V, world_per_px, E, s, ends);

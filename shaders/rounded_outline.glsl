@@ -119,7 +119,10 @@ float el_outline_strip(int e, vec2 s, mat3 nm, out float dist, out float along_t
       vec4 ce = frame.projection * (frame.view * vec4(at_end, 1.0));
       vec4 co = frame.projection * (frame.view * vec4(at_end + out_of_face * (abs(c) * length(w1 - w0) / max(length(out_of_face), 1e-30)), 1.0));
       vec2 q = (co.xy / co.w - ce.xy / ce.w) * 0.5 * frame.viewport.xy;
-      cut[end] = abs(c);
+      /* The cut, a fraction of the edge from this end, as a fraction of its image (el_strip_part
+       * takes the pixel's foot on the image): perspective divides by the clip w. */
+      float w_here = end == 0 ? c0.w : c1.w, w_there = end == 0 ? c1.w : c0.w;
+      cut[end] = abs(c) * w_there / max((1.0 - abs(c)) * w_here + abs(c) * w_there, 1e-30);
       h = co.w > 0.0 ? max(-faces_side * (along.x * q.y - along.y * q.x) / l, 0.0) : 0.0;
     }
     arc[end] = (end == 0 ? t4.w : t5.w) > 0.0 ? -1.0 - h : h;
@@ -176,42 +179,44 @@ int el_strip_part(float strip0, float strip1, float along_t, float length_px, fl
   return d2 < reach * reach ? (lone ? EL_STRIP_LONE_DISC : EL_STRIP_DISC) : (d2 < strip * strip ? EL_STRIP_NEAR : EL_STRIP_NONE);
 }
 
-/* Two strips' ends at one vertex lie equally far from a pixel (exactly: both are affine on
- * screen, from the same point); the ends of a chain's next edges do not. */
-const float EL_SAME_END_PX = 1.0 / 16.0;
+/* Two strips' ends at one vertex lie equally far from a pixel, to float precision (both
+ * distances are affine on screen, from the same point: about 1e-4 px apart); the ends of a
+ * chain's next edges, at other vertices, do not, but for pixels on a thin band about their
+ * bisector. */
+const float EL_SAME_END_PX = 1.0 / 512.0;
 
-/* Adds a strip's el_strip_part, and its end_px, to a pixel's tally: x, 1 once the pixel lies in
- * a strip's body or a lone disc; y, how many ends it lies past within their strip's width, the
- * first four kept in `ends` (their distances, negated where the pixel lies in that end's disc). */
+/* Adds a strip's el_strip_part, and its end_px, to a pixel's tally: x, 1 once the pixel lies
+ * past the rounded outline (in a strip's body or a lone disc, or in a disc whose end meets an
+ * end tallied before at its vertex, the pixel past both: the wedge between two strips); y, how
+ * many ends it lies past within their strip's width, the first four kept in `ends` (their
+ * distances, negated where the pixel lies in that end's disc). Where a chain's edges are
+ * shorter than their strips are wide (a bolt hole's rim seen obliquely), a pixel past the
+ * silhouette's last end also lies past the ends of the edges before it, at other vertices:
+ * those do not pair. Each end is compared as it comes, so one past the four kept still pairs
+ * with them. */
 void el_tally_strip(int part, float end_px, inout ivec2 tally, inout vec4 ends)
 {
   if (part == EL_STRIP_BODY || part == EL_STRIP_LONE_DISC) {
     tally.x = 1;
   }
-  else if ((part == EL_STRIP_DISC || part == EL_STRIP_NEAR) && tally.y < 4) {
-    ends[tally.y] = part == EL_STRIP_DISC ? -end_px : end_px;
+  else if (part == EL_STRIP_DISC || part == EL_STRIP_NEAR) {
+    float mine = part == EL_STRIP_DISC ? -end_px : end_px;
+    for (int i = 0; i < min(tally.y, 4); i++) {
+      if ((mine < 0.0 || ends[i] < 0.0) && abs(end_px - abs(ends[i])) < EL_SAME_END_PX) {
+        tally.x = 1;
+      }
+    }
+    if (tally.y < 4) {
+      ends[tally.y] = mine;
+    }
     tally.y++;
   }
 }
 
-/* Whether a pixel lies past the rounded outline, from its tally: in a strip's body or lone
- * disc, or in a disc whose end meets another strip's end at the vertex, the pixel past both (a
- * wedge between them). Where a chain's edges are shorter than their strips are wide (a bolt
- * hole's rim seen obliquely), a pixel past the silhouette's last end also lies past the ends of
- * the edges before it, at other vertices: those do not count. */
-bool el_past_outline(ivec2 tally, vec4 ends)
+/* Whether a pixel lies past the rounded outline, from its tally (el_tally_strip). */
+bool el_past_outline(ivec2 tally)
 {
-  if (tally.x > 0) {
-    return true;
-  }
-  for (int i = 0; i < tally.y; i++) {
-    for (int j = i + 1; j < tally.y; j++) {
-      if ((ends[i] < 0.0 || ends[j] < 0.0) && abs(abs(ends[i]) - abs(ends[j])) < EL_SAME_END_PX) {
-        return true;
-      }
-    }
-  }
-  return false;
+  return tally.x > 0;
 }
 
 /* The list of rounded edges `texel` (0 .. EL_OUTLINE_EDGES_PER_TRIANGLE / 4 - 1) of triangle
@@ -223,14 +228,14 @@ vec4 el_outline_edge_list(int tri, int texel)
 
 /* For the first four of triangle `tri`'s listed edges, at this vertex (clip position `clip`),
  * el_outline_strip's values (the strip at p0 returned), to be interpolated without perspective:
- * a triangle's first four edges (its own sides and the nearest) cost the vertex shader only. */
+ * a triangle's first four edges (its own sides and the nearest) cost the vertex shader only.
+ * Each end's cut and arc are packed as two halves (packHalf2x16) in end0 and end1: four flat
+ * floats an edge would take the surface program past the 60 varying components GL promises. */
 vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out vec4 strip1, out vec4 length_px,
-                       out vec4 cut0, out vec4 cut1, out vec4 arc0, out vec4 arc1)
+                       out uvec4 end0, out uvec4 end1)
 {
-  cut0 = vec4(0.0);
-  cut1 = vec4(0.0);
-  arc0 = vec4(0.0);
-  arc1 = vec4(0.0);
+  end0 = uvec4(packHalf2x16(vec2(0.0)));
+  end1 = end0;
   dist = vec4(0.0);
   along_t = vec4(0.0);
   strip1 = vec4(0.0);
@@ -253,10 +258,8 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
     if (w0 < 0.0) {
       continue;
     }
-    cut0[k] = c.x;
-    cut1[k] = c.y;
-    arc0[k] = h.x;
-    arc1[k] = h.y;
+    end0[k] = packHalf2x16(vec2(c.x, h.x));
+    end1[k] = packHalf2x16(vec2(c.y, h.y));
     dist[k] = d;
     along_t[k] = a;
     strip1[k] = w1;

@@ -15,8 +15,9 @@ void main()
   vec4 ends = vec4(0.0);
   for (int k = 0; k < 4; k++) {
     float end_px;
+    vec2 e0 = unpackHalf2x16(outline_end0[k]), e1 = unpackHalf2x16(outline_end1[k]);
     int part = el_strip_part(outline_strip0[k], outline_strip1[k], outline_along[k], outline_length[k], outline_dist[k],
-                             vec2(outline_cut0[k], outline_cut1[k]), vec2(outline_arc0[k], outline_arc1[k]), end_px);
+                             vec2(e0.x, e1.x), vec2(e0.y, e1.y), end_px);
     el_tally_strip(part, end_px, tally, ends);
   }
 #ifdef EL_OUTLINE_MORE
@@ -24,7 +25,7 @@ void main()
    * the check's code costs every fragment of the program, taken or not. */
   el_tally_more_strips(int(surface_tri + 0.5), gl_FragCoord.xy, tally, ends);
 #endif
-  if (el_past_outline(tally, ends)) {
+  if (el_past_outline(tally)) {
     discard;
   }
   for (int q = 0; q < 4; q++) {

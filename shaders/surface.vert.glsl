@@ -12,7 +12,7 @@ void main()
   surface_tri = float(gl_VertexID / 3);
 #ifdef EL_ROUNDED_OUTLINE
   outline_strip0 = el_outline_strips(gl_VertexID / 3, gl_Position, outline_dist, outline_along, outline_strip1,
-                                     outline_length, outline_cut0, outline_cut1, outline_arc0, outline_arc1);
+                                     outline_length, outline_end0, outline_end1);
   outline_ball = el_outline_corners(gl_VertexID / 3, gl_Position, outline_corner0, outline_corner1, outline_corner2,
                                     outline_corner3);
 #endif
