@@ -100,6 +100,17 @@ def listed(lists):
     return [set(int(x) - 1 for x in row[:rounded_outline.EDGES_PER_TRIANGLE] if x > 0) for row in lists]
 
 
+def l_prism():
+    """An L-shaped prism, its outline's corner (1, 1) reflex: (positions, edges, polys, tris) and
+    the outline's vertex count n (the reflex edge runs from vertex 3 to 3 + n)."""
+    outline = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
+    n = len(outline)
+    verts = [(x, y, 0.0) for x, y in outline] + [(x, y, 1.0) for x, y in outline]
+    polys_list = [list(range(n))[::-1], [i + n for i in range(n)]]
+    polys_list += [[i, (i + 1) % n, (i + 1) % n + n, i + n] for i in range(n)]
+    return (*mesh(verts, polys_list), n)
+
+
 class RoundedOutline(unittest.TestCase):
     def test_box_halves_list_their_quad(self):
         positions, edges, polys, tris = box()
@@ -215,12 +226,7 @@ class RoundedOutline(unittest.TestCase):
         self.assertTrue(all(len(x) == 4 for x in listed(fast)))
 
     def test_concave_edge_is_not_listed(self):
-        outline = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]  # (1, 1) is the reflex corner
-        n = len(outline)
-        verts = [(x, y, 0.0) for x, y in outline] + [(x, y, 1.0) for x, y in outline]
-        polys_list = [list(range(n))[::-1], [i + n for i in range(n)]]
-        polys_list += [[i, (i + 1) % n, (i + 1) % n + n, i + n] for i in range(n)]
-        positions, edges, polys, tris = mesh(verts, polys_list)
+        positions, edges, polys, tris, n = l_prism()
         ex, sel = extract_of(positions, edges, polys, tris, np.ones(len(edges), bool))
         recs, _, lists = rounded_outline.records(ex)
         reflex = [i for i, (a, b) in enumerate(edges[sel]) if {a, b} == {3, 3 + n}]
@@ -237,12 +243,7 @@ class RoundedOutline(unittest.TestCase):
         unit length, and its end arc lies in their other face (the cap): that cut, signed by
         the face, and the end's mark (a concave edge meets it) are in their records; every other
         end has neither."""
-        outline = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
-        n = len(outline)
-        verts = [(x, y, 0.0) for x, y in outline] + [(x, y, 1.0) for x, y in outline]
-        polys_list = [list(range(n))[::-1], [i + n for i in range(n)]]
-        polys_list += [[i, (i + 1) % n, (i + 1) % n + n, i + n] for i in range(n)]
-        positions, edges, polys, tris = mesh(verts, polys_list)
+        positions, edges, polys, tris, n = l_prism()
         ex, sel = extract_of(positions, edges, polys, tris, np.ones(len(edges), bool))
         self.assertEqual([set(e) for e in edges[ex.edge_data.flags == native.EDGE_CONCAVE]], [{3, 3 + n}])
         recs, _, verts_of = rounded_outline._edges(ex)
