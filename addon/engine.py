@@ -4,6 +4,7 @@ Every failure is loud: whatever goes wrong in render, view_update or view_draw b
 report naming it. An ERROR report from render() is what makes Blender treat the frame as failed:
 it is not saved, and `blender -b -f` exits with code 1 (docs/addon.md, "When a render fails").
 """
+import math
 import time
 import traceback
 
@@ -42,6 +43,37 @@ def render_region(r, full_w, full_h):
     x0, x1 = int(f(r.border_min_x) * f(full_w)), int(f(r.border_max_x) * f(full_w))
     y0, y1 = int(f(r.border_min_y) * f(full_h)), int(f(r.border_max_y) * f(full_h))
     return x0, y0, max(0, x1 - x0), max(0, y1 - y0)
+
+
+def drawn_region(region, full_w, full_h, margin):
+    """The region grown by `margin` pixels on each side that lies inside the frame (a region's
+    edge on the frame's edge stays), and where the region lies in it: (x, y, w, h), (dx, dy).
+    Drawn past its edges, a region's pixels are the full frame's: ink whose centre lies outside
+    still reaches in, and the line pass judges a stroke's visibility from the 3 x 3 pixels round
+    its centre (docs/lines.md), which the region's edge would cut."""
+    x0, y0, w, h = region
+    ax, ay = max(0, x0 - margin), max(0, y0 - margin)
+    bx, by = min(full_w, x0 + w + margin), min(full_h, y0 + h + margin)
+    return (ax, ay, bx - ax, by - ay), (x0 - ax, y0 - ay)
+
+
+class Crop:
+    """The region's pixels (w x h at dx, dy) of an image drawn over its drawn_region: (h, w, ...)
+    arrays, rows bottom-up."""
+
+    def __init__(self, dx, dy, w, h):
+        self.dx, self.dy, self.w, self.h = dx, dy, w, h
+
+    def __call__(self, image):
+        return np.ascontiguousarray(image[self.dy:self.dy + self.h, self.dx:self.dx + self.w])
+
+
+def region_margin(line_settings):
+    """Pixels drawn past a render region's inner edges: half the widest ink in pixels and its
+    3 x 3 window, at least a few pixels; a width in scene units counts as 32 pixels."""
+    widest = max((16.0 if st.scene_units else st.width / 2.0 for _, st in line_settings.styles),
+                 default=0.0) if line_settings is not None else 0.0
+    return int(min(128, math.ceil(widest) + 4))
 
 
 def region_projection(projection, full_w, full_h, region):
@@ -178,7 +210,11 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         if region[2] <= 0 or region[3] <= 0:
             raise RenderRefused(f"the render region is empty ({region[2]} x {region[3]} pixels)")
         check_size(region[2], region[3])
-        camera = camera_for_render(depsgraph, full_w, full_h, region)
+        drawn, at = drawn_region(region, full_w, full_h, region_margin(lines.settings_of(scene.edgelight)))
+        check_size(drawn[2], drawn[3])
+        camera = camera_for_render(depsgraph, full_w, full_h, drawn)
+        crop = Crop(at[0], at[1], region[2], region[3])
+        record["camera"] = camera_for_render(depsgraph, full_w, full_h, region)  # the pixels Blender gets
         lib, error = load_library()
         if lib is None:
             raise RenderRefused(f"native library unavailable: {error}")
@@ -194,12 +230,12 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             combined = result.layers[0].passes["Combined"]
 
             def preview(pixels):  # the partial image in the Image Editor while samples accumulate
-                compat.write_pass(combined, pixels.reshape(-1, 4))
+                compat.write_pass(combined, crop(pixels).reshape(-1, 4))
                 self.update_result(result)
                 if capture:
                     record["previews"] = record.get("previews", 0) + 1
 
-            pixels = self._render_pixels(depsgraph, camera, lib, record, buffers, preview)
+            pixels = self._render_pixels(depsgraph, camera, crop, lib, record, buffers, preview)
             compat.write_pass(combined, pixels.reshape(-1, 4))
             written = {} if capture else None
             render_passes.write(result.layers[0], view_layer, buffers, written)
@@ -208,7 +244,9 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         finally:
             self.end_result(result)
 
-    def _render_pixels(self, depsgraph, camera, lib, record, buffers, preview):
+    def _render_pixels(self, depsgraph, camera, crop, lib, record, buffers, preview):
+        """The region's pixels, drawn over `camera`'s (the region with its margin) and cropped;
+        `buffers` receives the render passes' buffers, cropped."""
         self.update_stats("EdgeLight", "Gathering scene")
         toon.forget_images()  # an image may have been painted since the last render
         settings = depsgraph.scene.edgelight
@@ -222,6 +260,10 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
         for line in data.reports:
             self._report('WARNING', f"EdgeLight: {line}", record)
+        if data.failed and not data.instances:  # the frame would be empty, as if nothing were there
+            names = ", ".join(f"'{n}'" for n in data.failed[:6]) + (" and more" if len(data.failed) > 6 else "")
+            raise RenderRefused(f"nothing could be drawn: {len(data.failed)} object"
+                                f"{'s' if len(data.failed) != 1 else ''} failed ({names}; see the warnings)")
         s = frame.Settings(samples=settings.samples, highlights=settings.highlights,
                            transparent=depsgraph.scene.render.film_transparent, lines=line_settings,
                            ids="ids" in buffers)
@@ -239,14 +281,21 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
                                      passes=buffers, preview=preview, vector=vector)
         if buffers.get("ids") is not None:  # which instance covers each pixel -> its object's pass_index
             buffers["ids"] = render_passes.object_index(buffers["ids"], data.instances)
+        pixels = crop(pixels)
+        for name, buffer in buffers.items():
+            if buffer is not None:
+                buffers[name] = crop(buffer)
+        for name, buffer in (keep or {}).items():
+            keep[name] = crop(buffer)
         if vector is not None and not self.test_break():  # the lines as SVG beside the frame
-            svg_output.write_render(depsgraph.scene, record["layer"], data, camera, line_settings, vector, record)
+            view = (crop.dx, camera.height - crop.dy - crop.h, crop.w, crop.h)
+            svg_output.write_render(depsgraph.scene, record["layer"], data, camera, line_settings, vector, record, view)
         for line in data.reports[reported:]:  # what the passes skipped
             self._report('WARNING', f"EdgeLight: {line}", record)
         if stats.samples == 0 and not self.test_break():
             raise RenderRefused("no sample was drawn")
         if capture:
-            record.update(keep, pixels=pixels, stats=stats, reports=list(data.reports), camera=camera, scene=data)
+            record.update(keep, pixels=pixels, stats=stats, reports=list(data.reports), scene=data)
         self.update_stats("EdgeLight", f"{stats.objects} objects, {stats.edges_drawn} edges, {stats.lines_drawn} line segments")
         return pixels
 

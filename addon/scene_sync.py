@@ -41,7 +41,7 @@ class MeshExtract:
 
     def notes(self):
         """Report lines about this geometry: what was drawn differently from the file and why."""
-        out = [self.info[k] for k in ("note", "winding") if self.info.get(k)]
+        out = [self.info[k] for k in ("non-finite", "note", "winding") if self.info.get(k)]
         out += [s.note for s in self.slot_shading if getattr(s, "note", "")]
         return list(dict.fromkeys(out))
 
@@ -75,6 +75,7 @@ class Instance:
     mesh: MeshExtract
     matrix: np.ndarray                 # object -> world, 4x4 row-major
     pass_index: int = 0                # its object's Pass Index (the Object Index render pass)
+    holdout: bool = False              # masked out of the view layer: a hole in the image
 
 
 @dataclass
@@ -83,10 +84,16 @@ class SceneData:
     lights: list
     ambient: tuple
     reports: list                      # what was skipped and why
+    failed: list = field(default_factory=list)  # the objects skipped for an error in their data
 
 
 class SkipObject(Exception):
-    """This object cannot be drawn; the message says why. The render goes on."""
+    """This object cannot be drawn; the message says why. The render goes on. `failed`: for an
+    error in its data (an object with nothing to shade has none)."""
+
+    def __init__(self, message, failed=True):
+        super().__init__(message)
+        self.failed = failed
 
 
 def _foreach(collection, prop, dtype, width=1):
@@ -122,6 +129,17 @@ def polygon_unit_normals(mesh, positions):
     return np.where(ok, n / np.where(ok, length, 1.0), 0.0).astype(np.float32)
 
 
+def _broken_polygons(mesh, positions):
+    """Which polygons have a vertex at a position that is not a finite number, or None when every
+    vertex's is finite. Loops run polygon by polygon, as triangle_edge_map takes them."""
+    bad = ~np.isfinite(positions).all(axis=1)
+    if not bad.any():
+        return None
+    total = _foreach(mesh.polygons, "loop_total", np.int64)
+    loop_bad = bad[_foreach(mesh.loops, "vertex_index", np.int64)]
+    return np.bincount(np.repeat(np.arange(len(total)), total), weights=loop_bad, minlength=len(total)) > 0
+
+
 def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None):
     """Arrays and chosen edges of an evaluated mesh. Raises SkipObject with a reason. With
     `cache` (render_cache.ExtractCache), an extraction of the same object with the same content
@@ -129,13 +147,27 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     mesh.calc_loop_triangles()
     tri_count = len(mesh.loop_triangles)
     if tri_count == 0:
-        raise SkipObject(f"{name}: no faces ({len(mesh.edges)} loose edges), nothing to shade")
+        raise SkipObject(f"{name}: no faces ({len(mesh.edges)} loose edges), nothing to shade", failed=False)
     positions = _foreach(mesh.vertices, "co", np.float32, 3)
     tri_verts = _foreach(mesh.loop_triangles, "vertices", np.uint32, 3)
     tri_loops = _foreach(mesh.loop_triangles, "loops", np.int64, 3)
     edges = _foreach(mesh.edges, "vertices", np.uint32, 2)
     tri_edges = triangle_edge_map(mesh, tri_loops)
     tri_slot = np.clip(compat.triangle_material_index(mesh), 0, max(len(materials) - 1, 0))
+    tri_poly = _foreach(mesh.loop_triangles, "polygon_index", np.int64)
+    broken = _broken_polygons(mesh, positions)
+    dropped = None
+    if broken is not None:
+        # Not drawn, as a GPU leaves them: the faces with a vertex at no finite position.
+        keep = ~broken[tri_poly]
+        if not keep.any():
+            raise SkipObject(f"{name}: every face has a vertex whose position is not a finite number")
+        dropped = (int(broken.sum()), int((~np.isfinite(positions).all(axis=1)).sum()))
+        tri_verts, tri_loops, tri_edges = tri_verts[keep], tri_loops[keep], tri_edges[keep]
+        tri_slot, tri_poly = tri_slot[keep], tri_poly[keep]
+        tri_count = len(tri_verts)
+        # The library takes finite positions only; no face left uses these.
+        positions = np.where(np.isfinite(positions), positions, 0.0).astype(np.float32)
     sharp = compat.edge_sharp(mesh)
     marks = (sharp.astype(np.uint32) * native.MARK_SHARP
              | compat.edge_seam(mesh).astype(np.uint32) * native.MARK_SEAM
@@ -143,12 +175,14 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     bevel = np.clip(compat.edge_bevel_weight(mesh), 0.0, 1.0).astype(np.float32)
     # Each triangle classifies by its polygon's normal: a sliver's own normal is noise, and a
     # zero-area piece along a polygon's side (collinear corners) would drop that side's edge.
-    tri_poly = _foreach(mesh.loop_triangles, "polygon_index", np.int64)
     polygons = radius_clamp.Polygons(_foreach(mesh.polygons, "loop_start", np.int64),
                                      _foreach(mesh.polygons, "loop_total", np.int64),
                                      _foreach(mesh.loops, "vertex_index", np.int64), tri_poly,
                                      _foreach(mesh.loops, "edge_index", np.int64), None)
     corner_nor = compat.corner_normals(mesh)[tri_loops.reshape(-1)]
+    if dropped is not None:  # a smooth corner next to a dropped face may have taken its NaN
+        flat = np.repeat(polygon_unit_normals(mesh, positions)[tri_poly], 3, axis=0)
+        corner_nor = np.where(np.isfinite(corner_nor).all(axis=1, keepdims=True), corner_nor, flat)
     shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
     key = None
     if cache is not None:
@@ -194,6 +228,9 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
         out.info["winding"] = (f"{name}: {info['flipped_winding_edges']} edges join faces wound against each other; "
                                f"{info['reoriented_triangles']} faces were re-oriented (for highlights, creases "
                                f"and silhouettes only, the mesh is unchanged)")
+    if dropped is not None:
+        out.info["non-finite"] = (f"{name}: {dropped[1]} vertices have no finite position; the {dropped[0]} faces "
+                                  f"using them are not drawn")
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
     if cache is not None:
@@ -307,6 +344,8 @@ def walk_instances(depsgraph, lookup):
     instances, lights, not_drawn = [], [], {}
     override = getattr(depsgraph.view_layer, "material_override", None)
     for inst in depsgraph.object_instances:
+        if not inst.show_self:
+            continue  # an instancer that shows only its instances (a particle emitter's Show Emitter off)
         ob = inst.object
         if ob.type == 'LIGHT':
             light = light_of(ob, inst.matrix_world)
@@ -320,8 +359,18 @@ def walk_instances(depsgraph, lookup):
         materials = object_materials(ob, override)
         extract = lookup(geometry_key(ob, materials), ob, inst, materials)
         if extract is not None:
-            instances.append(Instance(extract, np.array(inst.matrix_world, dtype=np.float32), ob.pass_index))
+            instances.append(Instance(extract, np.array(inst.matrix_world, dtype=np.float32), ob.pass_index,
+                                      is_holdout(inst, depsgraph.view_layer)))
     return instances, lights, not_drawn
+
+
+def is_holdout(inst, view_layer):
+    """Whether the view layer masks the instance out, as Cycles and EEVEE do: the object's own
+    Holdout (Object > Visibility), or a holdout collection holding it or its instancer."""
+    for ob in (inst.object, inst.parent if inst.is_instance else None):
+        if ob is not None and (ob.is_holdout or ob.original.holdout_get(view_layer=view_layer)):
+            return True
+    return False
 
 
 def read_object(ob, label, materials, lib=None, line_settings=None, cache=None):
@@ -341,7 +390,7 @@ def read_object(ob, label, materials, lib=None, line_settings=None, cache=None):
 def collect(depsgraph, lib=None, line_settings=None, cache=None):
     """Everything visible in the evaluated scene. Objects that fail are reported and skipped.
     `cache`: a render_cache.ExtractCache that extractions are kept in and reused from."""
-    reports, extracted = [], {}
+    reports, extracted, failed = [], {}, []
 
     def lookup(key, ob, inst, materials):
         if key not in extracted:
@@ -351,6 +400,8 @@ def collect(depsgraph, lib=None, line_settings=None, cache=None):
                                              line_settings=line_settings, cache=cache)
             except SkipObject as e:
                 reports.append(str(e))
+                if e.failed:
+                    failed.append(instance_label(inst))
             if extracted[key] is not None:
                 reports.extend(extracted[key].notes())
         return extracted[key]
@@ -359,4 +410,4 @@ def collect(depsgraph, lib=None, line_settings=None, cache=None):
     note = not_drawn_note(not_drawn)
     if note:
         reports.append(note)
-    return SceneData(instances, lights, world_ambient(depsgraph.scene), reports)
+    return SceneData(instances, lights, world_ambient(depsgraph.scene), reports, failed)

@@ -40,24 +40,25 @@ def frame_svg_path(scene, layer=None):
     return bpy.path.abspath(path) + ".svg"
 
 
-def write(path, scene_data, camera, line_settings, vector):
-    """Writes the SVG of one frame; returns its size in bytes."""
+def write(path, scene_data, camera, line_settings, vector, view=None):
+    """Writes the SVG of one frame; returns its size in bytes. `view`: svg_write.document's."""
     instances = vector_lines.instances_of(scene_data, vector.get("view_segments"))
     strokes = vector_lines.strokes(instances, line_settings, camera, vector["depth"], vector["ids"],
                                    vector.get("rounded", False))
-    root = svg_write.document(strokes, line_settings, camera.width, camera.height)
+    root = svg_write.document(strokes, line_settings, camera.width, camera.height, view=view)
     os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
     svg_write.write(path, root)
     return os.path.getsize(path)
 
 
-def write_render(scene, layer, scene_data, camera, line_settings, vector, record):
-    """The engine's hook after a frame: the frame's SVG (or the pending export's)."""
+def write_render(scene, layer, scene_data, camera, line_settings, vector, record, view=None):
+    """The engine's hook after a frame: the frame's SVG (or the pending export's); `view`, the
+    part of the drawn frame Blender asked for (svg_write.document)."""
     if line_settings is None or "depth" not in vector:
         return
     start = time.perf_counter()
     path = _pending.pop("path", None) or frame_svg_path(scene, layer)
-    size = write(path, scene_data, camera, line_settings, vector)
+    size = write(path, scene_data, camera, line_settings, vector, view)
     # The record outlives the render only for tests (engine.capture).
     record.update(svg=path, svg_bytes=size, svg_seconds=time.perf_counter() - start, vector=vector)
 

@@ -32,15 +32,17 @@ def _q(tag):
     return f"{{{SVG_NS}}}{tag}"
 
 
-def document(strokes, settings, width, height, title="EdgeLight lines"):
-    """ElementTree root of the SVG for `strokes` (type -> [Stroke]) of LineSettings `settings`.
+def document(strokes, settings, width, height, title="EdgeLight lines", view=None):
+    """ElementTree root of the SVG for `strokes` (type -> [Stroke]) of LineSettings `settings`,
+    drawn over width x height pixels; `view` (x, y, w, h; y down), the part of them shown, when
+    not all (a render region drawn with a margin).
 
     Layers paint in reverse draw order, hidden ones first: in the line pass the type drawn
     first wins a tie and visible strokes sit over hidden ones, so those end on top here. The
     opacity is the layer's (group opacity), so a chain's overlapping caps do not stack, as
     the line pass keeps each pixel's most opaque stroke."""
-    root = ET.Element(_q("svg"), {"version": "1.1", "width": str(width), "height": str(height),
-                                  "viewBox": f"0 0 {width} {height}"})
+    x, y, w, h = view or (0, 0, width, height)
+    root = ET.Element(_q("svg"), {"version": "1.1", "width": str(w), "height": str(h), "viewBox": f"{x} {y} {w} {h}"})
     ET.SubElement(root, _q("title")).text = title
     styles = dict(settings.styles)
     for hidden in (True, False):

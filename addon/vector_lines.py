@@ -220,6 +220,8 @@ def instances_of(scene, view_segments):
     and its view-dependent ones (frame.view_line_segments)."""
     out = []
     for i, inst in enumerate(scene.instances):
+        if inst.holdout:  # a hole in the image has no ink
+            continue
         segs = dict(inst.mesh.lines)
         if view_segments and i < len(view_segments) and view_segments[i]:
             segs.update(view_segments[i])

@@ -225,7 +225,7 @@ class ViewportState:
         # keeps it; with rounded silhouettes the extract too, whose radii they follow) and its
         # transform.
         key = (view_key, view_styles, rounded,
-               tuple((id(i.mesh.native), id(i.mesh) if rounded else 0, i.matrix.tobytes())
+               tuple((id(i.mesh.native), id(i.mesh) if rounded else 0, i.matrix.tobytes(), i.holdout)
                      for i in self.instances)) if view_styles else None
         if key == self.view_lines_key:
             return
@@ -282,7 +282,7 @@ class ViewportState:
 def scene_signature(state, scene):
     """Everything besides geometry and materials that the image depends on."""
     s = scene.edgelight
-    return (tuple((id(i.mesh), i.matrix.tobytes()) for i in state.instances), state.line_settings,
+    return (tuple((id(i.mesh), i.matrix.tobytes(), i.holdout) for i in state.instances), state.line_settings,
             tuple((lt.kind, lt.color, lt.position, lt.direction, lt.spot_cos, lt.spot_blend) for lt in state.lights),
             state.ambient, s.viewport_samples, s.highlights, scene.render.film_transparent)
 

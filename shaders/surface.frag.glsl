@@ -52,6 +52,10 @@ void main()
   out_normal = vec4(front ? normalize(world_nor) : -normalize(world_nor), 1.0);
 #endif
   const int mode = EL_SURFACE_MODE;
+  if (mode == EL_SURFACE_MODE_HOLDOUT) {
+    out_color = vec4(0.0, 0.0, 0.0, -1.0); /* a hole: the composite leaves out the world too */
+    return;
+  }
   if (mode == EL_SURFACE_MODE_WHITEOUT) {
     out_color = vec4(1.0, 1.0, 1.0, base_color.a); /* a transparent material stays transparent */
     return;

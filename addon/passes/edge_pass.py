@@ -56,7 +56,7 @@ def _draw_per_slot(shader, scene, gpu_meshes, batches_of):
     for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
         batches = batches_of(gm)
-        if not batches:
+        if not batches or inst.holdout:  # a hole in the image is not rounded
             continue
         shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
         shader_lib.set_uniform(shader, "instance_id", float(index + 1))

@@ -17,9 +17,11 @@ def shading_uniforms(shader, s):
     shader_lib.set_uniform(shader, "spec_color", (*s.spec_color, s.shininess))
 
 
-def _surface_mode(s, whiteout):
+def _surface_mode(s, whiteout, holdout=False):
     """The surface program's shading mode (shaders/surface_modes.json): the material's
-    (toon.mode: materials.py), or WHITEOUT."""
+    (toon.mode: materials.py), or WHITEOUT, or HOLDOUT for an instance masked out."""
+    if holdout:
+        return SURFACE_MODES["HOLDOUT"]
     return SURFACE_MODES["WHITEOUT"] if whiteout else int(s.toon.mode)
 
 
@@ -79,7 +81,7 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
         first = firsts.get(id(gm.extract), {})
         for slot, batch in gm.surface.items():
             s = gm.extract.slot_shading[slot]
-            mode = _surface_mode(s, whiteout)
+            mode = _surface_mode(s, whiteout, inst.holdout)
             ids_of = (float(index + 1), float(first.get(slot, 0)))
             outline = gm.outline.get(slot) if rounded else None
             if outline is None:

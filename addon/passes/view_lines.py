@@ -11,6 +11,8 @@ def line_instances(scene, gpu_meshes, view_batches):
     instances of a mesh) and its own view-dependent ones (view_batches[i] for instance i)."""
     out = []
     for i, inst in enumerate(scene.instances):
+        if inst.holdout:  # a hole in the image: no ink of its own, though it hides what lies behind
+            continue
         batches_of = dict(gpu_meshes[id(inst.mesh)].lines)
         if view_batches and i < len(view_batches) and view_batches[i]:
             batches_of.update(view_batches[i])
@@ -26,6 +28,9 @@ def view_line_segments(scene, camera, line_settings, counters=None, rounded=Fals
     out, seen = [], {}
     for inst in scene.instances:
         index = seen[id(inst.mesh)] = seen.get(id(inst.mesh), -1) + 1
+        if inst.holdout:  # a hole in the image has no ink
+            out.append({})
+            continue
         try:
             try:
                 out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters, rounded))

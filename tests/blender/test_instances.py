@@ -125,6 +125,14 @@ class Instances(unittest.TestCase):
         centres = np.array([np.asarray(i.matrix, np.float64)[:3, 3] for i in balls])
         self.assertEqual(len(np.unique(centres.round(4), axis=0)), 25, "each particle has its own place")
         self.assertTrue(self.covered_at(rec, centres + [0.0, 0.0, 0.15]).all())
+        self.assertIn("Emitter", [i.mesh.name for i in rec["scene"].instances])
+        # Show Emitter off (the object's Instancing panel, Render): the particles without it.
+        emitter.show_instancer_for_render = False
+        rec = helpers.render()
+        self.assertEqual([i.mesh.name for i in rec["scene"].instances if not i.mesh.name.startswith("Ball")], [])
+        self.assertEqual(len(rec["scene"].instances), 25)
+        gaps = np.array([(x + 0.5, y + 0.5, 0.0) for x in range(-3, 3) for y in range(-3, 3)])
+        self.assertLess(self.covered_at(rec, gaps).mean(), 0.5, "the emitter's face is not drawn")
 
     def test_linked_duplicates_share_one_mesh(self):
         a = zoo.box("A", 1.0, location=(-2.0, 0.0, 0.0))

@@ -100,6 +100,65 @@ class MaterialOverride(unittest.TestCase):
                 self.assertEqual(bool(rgb[1] > rgb[0]), want_green, f"{name} at {centre}: {rgb}")
 
 
+class Holdout(unittest.TestCase):
+    """A holdout (a collection masked out of a view layer, or the object's own Holdout) is a hole
+    in the image, as Cycles and EEVEE cut it: alpha 0 on any film, no world, no highlights or ink
+    of its own, and it hides what lies behind it."""
+
+    def scene(self):
+        scene = helpers.empty_scene(240, 160)
+        zoo.top_camera(3.0)
+        helpers.add_sun()
+        hold = bpy.data.collections.new("Hold")
+        scene.collection.children.link(hold)
+        zoo.box("Floor", 4.0, (0.0, 0.0, -2.0))
+        zoo.box("Held", 1.0, (-1.0, 0.0, 1.0), hold)
+        zoo.box("Solid", 1.0, (1.0, 0.0, 1.0))
+        helpers.only_lines(scene, silhouette=2.0, crease=2.0)
+        scene.edgelight.highlights = True
+        scene.view_layers[0].layer_collection.children["Hold"].holdout = True
+        scene.view_layers.new("Plain")  # the same collections, none held out
+        return scene
+
+    def at(self, rec, buf, point):
+        x, y = helpers.project(rec, [point])[0].astype(int)
+        return np.asarray(rec[buf])[y, x]
+
+    def box_window(self, rec, buf, centre):
+        """The largest alpha of `buf` over the unit box's image about `centre`, 3 px beyond."""
+        (x0, y0), (x1, y1) = helpers.project(rec, [np.add(centre, (-0.5, -0.5, 0.5)), np.add(centre, (0.5, 0.5, 0.5))])
+        lo, hi = np.floor(np.minimum((x0, y0), (x1, y1))).astype(int) - 3, np.ceil(np.maximum((x0, y0), (x1, y1))).astype(int) + 3
+        return float(np.asarray(rec[buf])[lo[1]:hi[1], lo[0]:hi[0], 3].max())
+
+    def test_a_holdout_collection_is_a_hole_in_its_layer_only(self):
+        helpers.needs_gpu()
+        scene = self.scene()
+        rec = helpers.render()
+        held, plain = rec["layers"][scene.view_layers[0].name], rec["layers"]["Plain"]
+        np.testing.assert_array_equal(self.at(held, "pixels", (-1.0, 0.0, 1.5)), (0.0, 0.0, 0.0, 0.0))
+        self.assertEqual(self.box_window(held, "highlight", (-1.0, 0.0, 1.0)), 0.0)
+        self.assertEqual(self.box_window(held, "lines", (-1.0, 0.0, 1.0)), 0.0)
+        for r in (held, plain):  # the rest as before: the solid box and the floor round it
+            for point in ((1.0, 0.0, 1.5), (0.0, 1.2, 0.0)):
+                px = self.at(r, "pixels", point)
+                self.assertEqual(px[3], 1.0, point)
+                self.assertGreater(px[:3].min(), 0.05, point)
+            self.assertGreater(self.box_window(r, "lines", (1.0, 0.0, 1.0)), 0.9)
+        self.assertEqual(self.at(plain, "pixels", (-1.0, 0.0, 1.5))[3], 1.0)
+        self.assertGreater(self.box_window(plain, "lines", (-1.0, 0.0, 1.0)), 0.9)
+        self.assertGreater(self.box_window(plain, "highlight", (-1.0, 0.0, 1.0)), 0.1)
+
+    def test_an_objects_own_holdout(self):
+        helpers.needs_gpu()
+        scene = self.scene()
+        bpy.data.objects["Solid"].is_holdout = True
+        scene.view_layers.remove(scene.view_layers["Plain"])
+        rec = helpers.render()
+        np.testing.assert_array_equal(self.at(rec, "pixels", (1.0, 0.0, 1.5)), (0.0, 0.0, 0.0, 0.0))
+        self.assertEqual(self.box_window(rec, "lines", (1.0, 0.0, 1.0)), 0.0)
+        self.assertEqual(self.at(rec, "pixels", (0.0, 1.2, 0.0))[3], 1.0, "the floor round it")
+
+
 class RenderRegion(unittest.TestCase):
     BORDER = (0.1234, 0.5678, 0.3333, 0.9)
 
@@ -130,6 +189,34 @@ class RenderRegion(unittest.TestCase):
             diff = np.abs(px - full[y0:y1, x0:x1]).max()
             self.assertLess(diff, 2e-3, f"crop={crop}")
             self.assertGreater((px[..., 3] > 0).sum(), 100)
+
+    def test_tiles_stitch_into_the_full_frame(self):
+        """A frame rendered as four regions (too large for the GPU in one piece, say) is the full
+        frame: ink that crosses a seam, or whose centre lies in the next tile, is judged and
+        drawn as in the full frame (each region is drawn with a margin past its inner edges).
+        Suzanne, smooth, with her contours, at 400 x 300."""
+        helpers.needs_gpu()
+        scene = helpers.empty_scene(400, 300)
+        helpers.add_camera((5.0, -5.0, 3.5))
+        helpers.add_sun()
+        bpy.ops.mesh.primitive_monkey_add()
+        bpy.ops.object.shade_smooth()
+        bpy.context.object.data.materials.append(zoo.material("Suzanne", (0.6, 0.2, 0.1)))
+        helpers.only_lines(scene, silhouette=2.0, crease=2.0, contour=2.0)
+        scene.edgelight.highlights = True
+        full = helpers.render()["pixels"]
+        self.assertGreater(np.asarray(helpers.addon().engine.last_render["lines"])[..., 3].sum(), 500.0)
+        r = scene.render
+        r.use_border, r.use_crop_to_border = True, True
+        stitched = np.zeros_like(full)
+        for x0, x1 in ((0.0, 0.5), (0.5, 1.0)):
+            for y0, y1 in ((0.0, 0.5), (0.5, 1.0)):
+                r.border_min_x, r.border_max_x, r.border_min_y, r.border_max_y = x0, x1, y0, y1
+                stitched[int(y0 * 300):int(y1 * 300), int(x0 * 400):int(x1 * 400)] = helpers.render()["pixels"]
+        diff = np.abs(stitched - full).max(axis=-1)
+        print(f"tiles against the full frame: largest difference {diff.max():.4f}, {int((diff > 2e-3).sum())} pixels over 2e-3")
+        # Measured: 0.0000. Drawn without the margin: 0.0984, 5 pixels, on the seams.
+        self.assertLess(diff.max(), 2e-3)
 
     def test_uncropped_region_lands_at_its_place_in_the_saved_frame(self):
         helpers.needs_gpu()

@@ -47,8 +47,19 @@ class BadMeshes(unittest.TestCase):
         ob = add_object("Broken", [(3, 0, 0), (4, 0, 0), (4, 1, 0)], [], [(0, 1, 2)])
         ob.data.vertices[1].co = (float("nan"), 0.0, 0.0)
         rec = self.render_ok()
-        self.assertIn("Broken: el_mesh_create: position of vertex 1 is not finite", messages(rec))
+        self.assertIn("Broken: every face has a vertex whose position is not a finite number", messages(rec))
         self.assertEqual(rec["stats"].objects, 1, "the cube still renders")
+
+    def test_a_render_where_every_object_fails_is_an_error(self):
+        """Nothing drawn because every object failed is a failed render, not an empty frame."""
+        bpy.data.objects.remove(bpy.data.objects["Cube"])
+        for name in ("Broken", "Other"):
+            ob = add_object(name, [(0, 0, 0), (1, 0, 0), (1, 1, 0)], [], [(0, 1, 2)])
+            ob.data.vertices[2].co = (0.0, float("nan"), 0.0)
+        rec = helpers.render(resolution=(160, 120), expect_error=True)
+        self.assertIn("nothing could be drawn: 2 objects failed ('Broken', 'Other'; see the warnings)", rec["raised"])
+        self.assertNotIn("pixels", rec)
+
 
     def test_zero_area_faces(self):
         add_object("Sliver", [(3, 0, 0), (4, 0, 0), (5, 0, 0), (3, 1, 0)], [], [(0, 1, 2), (0, 1, 3)])
@@ -70,6 +81,27 @@ class BadMeshes(unittest.TestCase):
         self.assertEqual(messages(rec), "")
         self.assertGreater(rec["stats"].edges_drawn, 0, "the default look rounds edges too")
 
+
+class NonFiniteVertices(unittest.TestCase):
+    def test_only_the_faces_of_a_vertex_at_no_finite_position_are_lost(self):
+        """A 4 x 4 grid of unit squares seen from above, one inner vertex at NaN: its four faces
+        are not drawn (as a GPU leaves them), the other twelve are, with one warning."""
+        helpers.empty_scene(200, 200)
+        helpers.add_camera((0.0, 0.0, 8.0))
+        helpers.add_sun()
+        verts = [(x - 2.0, y - 2.0, 0.0) for y in range(5) for x in range(5)]
+        faces = [(y * 5 + x, y * 5 + x + 1, (y + 1) * 5 + x + 1, (y + 1) * 5 + x) for y in range(4) for x in range(4)]
+        ob = add_object("Grid", verts, [], faces)
+        ob.data.vertices[6].co = (float("nan"), 0.0, 0.0)  # (x, y) = (-1, -1): cells (0..1, 0..1)
+        bpy.context.scene.edgelight.use_lines = True
+        rec = helpers.render()
+        self.assertIn("Grid: 1 vertices have no finite position; the 4 faces using them are not drawn", messages(rec))
+        centres = [(x - 1.5, y - 1.5, 0.0) for y in range(4) for x in range(4)]
+        px = np.floor(helpers.project(rec, centres)).astype(int)
+        covered = np.asarray(rec["surface"])[px[:, 1], px[:, 0], 3] > 0.5
+        lost = [x < 2 and y < 2 for y in range(4) for x in range(4)]
+        self.assertEqual(covered.tolist(), [not k for k in lost])
+        self.assertTrue(np.isfinite(rec["pixels"]).all())
 
 class NativeLibraryProblems(unittest.TestCase):
     def render_with_library(self, path):

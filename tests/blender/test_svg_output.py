@@ -156,6 +156,20 @@ class InkMatchesLinePass(unittest.TestCase):
             rec, path = render_svg(scene)
             self.check(rec, path, name)
 
+    def test_a_render_region(self):
+        """The SVG of a render region is the region's: its size, and the ink at its place."""
+        helpers.needs_gpu()
+        scene = helpers.open_sample("fandisk")
+        scene.edgelight.use_lines = True
+        r = scene.render
+        r.use_border, r.use_crop_to_border = True, True
+        r.border_min_x, r.border_max_x, r.border_min_y, r.border_max_y = 0.3, 0.75, 0.0, 0.6  # on the bottom edge
+        rec, path = render_svg(scene)
+        root = ET.parse(path).getroot()
+        h, w = rec["lines"].shape[:2]
+        self.assertEqual((root.get("width"), root.get("height")), (str(w), str(h)))
+        self.check(rec, path, "fandisk's region")
+
     def test_tapered_lines_in_stepped_widths(self):
         """Taper: each run of one width (0.25 px steps) is a polyline with its own stroke-width."""
         helpers.needs_gpu()
