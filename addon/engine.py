@@ -151,7 +151,7 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
                 self.viewport = viewport.ViewportState()
                 if capture:
                     viewport.last_state = self.viewport
-            self.viewport.sync(depsgraph, lib)
+            self.viewport.sync(depsgraph, lib, context.space_data)
         except Exception as e:  # noqa: BLE001 - any failure must reach the artist
             traceback.print_exc()
             self._viewport_error(f"viewport update failed: {type(e).__name__}: {e}")

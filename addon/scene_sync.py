@@ -120,19 +120,47 @@ def triangle_edge_map(mesh, tri_loops):
 
 def polygon_unit_normals(mesh, positions):
     """Blender's polygon normals, exactly unit, or zero for a polygon without area (Blender gives
-    those a made-up unit normal; the library then treats their faces as degenerate)."""
+    those a made-up unit normal; the library then treats their faces as degenerate). Without
+    area is relative to the polygon's own longest side, as the library judges a triangle: one
+    stray vertex far away must not make the rest of the mesh's faces look flat."""
     n = compat.polygon_normals(mesh).astype(np.float64)
     area = _foreach(mesh.polygons, "area", np.float64)
-    extent = float(np.ptp(positions, axis=0).max()) if len(positions) else 0.0
     length = np.linalg.norm(n, axis=1, keepdims=True)
-    ok = np.isfinite(length) & (length > 0.5) & (area[:, None] > 1e-12 * extent * extent)
+    ok = np.isfinite(length) & (length > 0.5) & (2.0 * area[:, None] > 1e-7 * _longest_sides(mesh, positions)[:, None])
     return np.where(ok, n / np.where(ok, length, 1.0), 0.0).astype(np.float32)
 
 
+def _longest_sides(mesh, positions):
+    """Each polygon's longest side, squared. Loops run polygon by polygon."""
+    start = _foreach(mesh.polygons, "loop_start", np.int64)
+    total = _foreach(mesh.polygons, "loop_total", np.int64)
+    if len(start) == 0:
+        return np.zeros(0)
+    loop_vert = _foreach(mesh.loops, "vertex_index", np.int64)
+    poly_of_loop = np.repeat(np.arange(len(start)), total)
+    loops = np.arange(len(loop_vert))
+    end = start[poly_of_loop] + total[poly_of_loop]
+    next_loop = np.where(loops + 1 < end, loops + 1, start[poly_of_loop])
+    p = positions.astype(np.float64)
+    side = np.einsum("ij,ij->i", *(2 * [p[loop_vert[next_loop]] - p[loop_vert]]))
+    return np.maximum.reduceat(side, start)
+
+
+# Farther from the origin than this a vertex has no usable position: its squared distances
+# overflow single precision, where the shaders compute (Blender stores an infinite coordinate
+# as the largest float).
+FARTHEST = 1e15
+
+
+def unusable_vertices(positions):
+    """Vertices at no usable position: NaN, infinite, or farther than FARTHEST on an axis."""
+    return ~(np.abs(positions) <= FARTHEST).all(axis=1)
+
+
 def _broken_polygons(mesh, positions):
-    """Which polygons have a vertex at a position that is not a finite number, or None when every
-    vertex's is finite. Loops run polygon by polygon, as triangle_edge_map takes them."""
-    bad = ~np.isfinite(positions).all(axis=1)
+    """Which polygons have a vertex at no usable position, or None when every vertex's is usable.
+    Loops run polygon by polygon, as triangle_edge_map takes them."""
+    bad = unusable_vertices(positions)
     if not bad.any():
         return None
     total = _foreach(mesh.polygons, "loop_total", np.int64)
@@ -158,16 +186,18 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     broken = _broken_polygons(mesh, positions)
     dropped = None
     if broken is not None:
-        # Not drawn, as a GPU leaves them: the faces with a vertex at no finite position.
+        # Not drawn, as a GPU leaves them: the faces with a vertex at no usable position.
         keep = ~broken[tri_poly]
         if not keep.any():
-            raise SkipObject(f"{name}: every face has a vertex whose position is not a finite number")
-        dropped = (int(broken.sum()), int((~np.isfinite(positions).all(axis=1)).sum()))
+            raise SkipObject(f"{name}: every face has a vertex at no usable position (NaN, infinite, "
+                             f"or farther than {FARTHEST:g} units)")
+        bad = unusable_vertices(positions)
+        dropped = (int(broken.sum()), int(bad.sum()))
         tri_verts, tri_loops, tri_edges = tri_verts[keep], tri_loops[keep], tri_edges[keep]
         tri_slot, tri_poly = tri_slot[keep], tri_poly[keep]
         tri_count = len(tri_verts)
         # The library takes finite positions only; no face left uses these.
-        positions = np.where(np.isfinite(positions), positions, 0.0).astype(np.float32)
+        positions = np.where(bad[:, None], 0.0, positions).astype(np.float32)
     sharp = compat.edge_sharp(mesh)
     marks = (sharp.astype(np.uint32) * native.MARK_SHARP
              | compat.edge_seam(mesh).astype(np.uint32) * native.MARK_SEAM
@@ -229,8 +259,8 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
                                f"{info['reoriented_triangles']} faces were re-oriented (for highlights, creases "
                                f"and silhouettes only, the mesh is unchanged)")
     if dropped is not None:
-        out.info["non-finite"] = (f"{name}: {dropped[1]} vertices have no finite position; the {dropped[0]} faces "
-                                  f"using them are not drawn")
+        out.info["non-finite"] = (f"{name}: {dropped[1]} vertices at no usable position (NaN, infinite, or farther "
+                                  f"than {FARTHEST:g} units); the {dropped[0]} faces using them are not drawn")
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
     if cache is not None:
@@ -335,10 +365,11 @@ def not_drawn_note(not_drawn):
     return f"does not draw {len(items)} object{'s' if len(items) != 1 else ''}: {shown}{more}"
 
 
-def walk_instances(depsgraph, lookup):
+def walk_instances(depsgraph, lookup, shown=None):
     """Every drawn instance of the evaluated scene, with the extraction `lookup` gives its
     geometry. lookup(key, ob, inst, materials) runs while the temporary instance object is valid
-    (only inside the depsgraph's iteration) and returns a MeshExtract or None.
+    (only inside the depsgraph's iteration) and returns a MeshExtract or None. `shown(inst)`,
+    when given, passes over the instances it says are hidden (viewport_shown).
 
     Returns (instances, lights, not_drawn: {label: type name})."""
     instances, lights, not_drawn = [], [], {}
@@ -346,6 +377,8 @@ def walk_instances(depsgraph, lookup):
     for inst in depsgraph.object_instances:
         if not inst.show_self:
             continue  # an instancer that shows only its instances (a particle emitter's Show Emitter off)
+        if shown is not None and not shown(inst):
+            continue
         ob = inst.object
         if ob.type == 'LIGHT':
             light = light_of(ob, inst.matrix_world)
@@ -362,6 +395,23 @@ def walk_instances(depsgraph, lookup):
             instances.append(Instance(extract, np.array(inst.matrix_world, dtype=np.float32), ob.pass_index,
                                       is_holdout(inst, depsgraph.view_layer)))
     return instances, lights, not_drawn
+
+
+def viewport_shown(view_layer, space=None):
+    """shown(inst) for walk_instances in a 3D view: whether the object, or for an instance its
+    instancer, is visible there (Object.visible_get: a collection hidden with its eye in the
+    view layer, local view). Blender 3.4's viewport depsgraph still lists the objects of a
+    collection hidden with its eye. One question per instancer, however many instances."""
+    known = {}
+
+    def shown(inst):
+        ob = (inst.parent if inst.is_instance and inst.parent is not None else inst.object).original
+        key = ob.as_pointer()
+        if key not in known:
+            known[key] = ob.visible_get(view_layer=view_layer, viewport=space)
+        return known[key]
+
+    return shown
 
 
 def is_holdout(inst, view_layer):

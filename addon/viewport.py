@@ -65,7 +65,11 @@ class ViewportState:
         self.instances = []
         self.lights = []
         self.ambient = (0.0, 0.0, 0.0)
-        self.reports = []
+        self.reports = []              # what the status bar says: the notes below, once each
+        self.notes = {}                # geometry key -> its extraction's notes (or why it was skipped)
+        self.scene_notes = []          # of the last sync: objects not drawn, lights past the limit
+        self.view_notes = []           # of the last view lines: instances the library refused
+        self.draw_notes = []           # of the last pass: what it skipped
         self.targets = None
         self.view_key = None
         self.image_valid = False
@@ -78,7 +82,8 @@ class ViewportState:
         self.view_lines_key = None
 
     # ---- view_update -------------------------------------------------------------------
-    def sync(self, depsgraph, lib):
+    def sync(self, depsgraph, lib, space=None):
+        """`space`: the 3D view (its local view hides what is not in it)."""
         self.counters.updates += 1
         geometry, shading = set(), False
         for update in depsgraph.updates:
@@ -101,11 +106,12 @@ class ViewportState:
                 seen.add(cache_key)
                 cache = self.objects.get(cache_key, False)
                 if cache is False or cache_key in stale:
-                    self.objects[cache_key] = self._extract(ob, inst, materials, lib)
+                    self.objects[cache_key], self.notes[cache_key] = self._extract(ob, inst, materials, lib)
                     self.owners[cache_key] = scene_sync.instance_owners(inst)
                 elif shading and cache is not None and cache_key not in reshaded:
                     reshaded.add(cache_key)
                     self._reshade(cache, materials)
+                    self.notes[cache_key] = cache.extract.notes()
             cache = self.objects[cache_key]
             if cache is None:
                 return None
@@ -113,18 +119,18 @@ class ViewportState:
                 cache.lines_stale = True  # crease angle, marks or tapering changed
             return cache.extract
 
-        instances, lights, not_drawn = scene_sync.walk_instances(depsgraph, lookup)
+        instances, lights, not_drawn = scene_sync.walk_instances(
+            depsgraph, lookup, scene_sync.viewport_shown(depsgraph.view_layer, space))
         removed = [k for k in self.objects if k not in seen]
         for key in removed:
             del self.objects[key]  # deleted objects and instances: their batches go with them
             self.owners.pop(key, None)
+            self.notes.pop(key, None)  # and what was said of them
         note = scene_sync.not_drawn_note(not_drawn)
-        if note and note not in self.reports:
-            self.reports.append(note)
+        self.scene_notes = [note] if note else []
         if len(lights) > frame_data.MAX_LIGHTS:
-            engine_note = f"{len(lights)} lights; the {frame_data.MAX_LIGHTS} first are used"
-            if engine_note not in self.reports:
-                self.reports.append(engine_note)
+            self.scene_notes.append(f"{len(lights)} lights; the {frame_data.MAX_LIGHTS} first are used")
+        self._gather_reports()
         self.instances, self.lights = instances, lights
         self.ambient = scene_sync.world_ambient(depsgraph.scene)
         # Updates that change nothing drawn (selection, UI, colour management, which the display
@@ -132,6 +138,7 @@ class ViewportState:
         signature = scene_signature(self, depsgraph.scene)
         if geometry or shading or removed or signature != self.signature:
             self.image_valid = False
+            self.counted_at = -1e9  # the status bar's edge counts follow the scene, not only the view
         self.signature = signature
 
     def _extract(self, ob, inst, materials, lib):
@@ -144,10 +151,14 @@ class ViewportState:
             extract, notes = None, [str(e)]
         else:
             notes = extract.notes() if extract is not None else []
-        for note in notes:
-            if note not in self.reports:  # re-extracting a broken object must not grow the list
-                self.reports.append(note)
-        return ObjectCache(extract, materials) if extract is not None else None
+        return (ObjectCache(extract, materials) if extract is not None else None), notes
+
+    def _gather_reports(self):
+        """The status bar's notes, once each: of the objects drawn now, of the scene, of the view
+        lines. A note goes once what it was about is deleted or mended."""
+        notes = ([n for k in self.objects for n in self.notes.get(k, ())] + self.scene_notes + self.view_notes
+                 + self.draw_notes)
+        self.reports = list(dict.fromkeys(notes))
 
     def _reshade(self, cache, materials):
         """Material settings changed: new uniforms; new edge batches only where the chosen edges
@@ -197,15 +208,19 @@ class ViewportState:
             self.counters.view_changes += 1
             self.view_key = key
             self.image_valid = False
-            self._maybe_count_culled(camera, settings.highlights)
         if self.image_valid and not fresh:
             self.counters.cache_hits += 1
         else:
-            scene = scene_sync.SceneData(self.instances, self.lights, self.ambient, self.reports)
+            self._maybe_count_culled(camera, settings.highlights)
+            scene = scene_sync.SceneData(self.instances, self.lights, self.ambient, [])
             s = frame.Settings(samples=settings.viewport_samples, highlights=settings.highlights,
                                transparent=depsgraph.scene.render.film_transparent, lines=self.line_settings)
-            self._update_view_lines(scene, camera, key, settings.highlights)
+            if self._update_view_lines(scene, camera, key, settings.highlights):
+                self.view_notes = list(scene.reports)  # said again only when the view lines are
+            made = len(scene.reports)
             stats = frame.draw(scene, camera, s, self.targets, gpu_meshes, view_batches=self.view_batches)
+            self.draw_notes = scene.reports[made:]
+            self._gather_reports()
             self.counters.lines_drawn = stats.lines_drawn
             self.counters.passes += 1
             self.image_valid = True
@@ -217,7 +232,8 @@ class ViewportState:
     def _update_view_lines(self, scene, camera, view_key, highlights):
         """Silhouettes and contours for this view: native view calls and new batches only when
         the view, an instance or the view-dependent line settings changed (with the highlights
-        on, silhouettes of rounded edges lie on the fillets' outline: lines.view_lines)."""
+        on, silhouettes of rounded edges lie on the fillets' outline: lines.view_lines). True
+        when they were made again."""
         ls = self.line_settings
         rounded = bool(highlights) and not (ls is not None and ls.whiteout)
         view_styles = tuple((t, st.taper > 0.0) for t, st in ls.styles if t in lines.VIEW_TYPES) if ls else ()
@@ -228,14 +244,15 @@ class ViewportState:
                tuple((id(i.mesh.native), id(i.mesh) if rounded else 0, i.matrix.tobytes(), i.holdout)
                      for i in self.instances)) if view_styles else None
         if key == self.view_lines_key:
-            return
+            return False
         self.view_lines_key = key
         if key is None:
             self.view_batches = []
-            return
+            return True
         segments = view_lines.view_line_segments(scene, camera, ls, self.counters, rounded)
         self.view_batches = [line_pass.line_batches(segs) for segs in segments]
         self.counters.view_uploads += sum(len(b) for b in self.view_batches)
+        return True
 
     def _caches(self):
         """The caches of the drawn meshes, each once (instances share one)."""

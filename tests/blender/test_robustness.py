@@ -47,7 +47,8 @@ class BadMeshes(unittest.TestCase):
         ob = add_object("Broken", [(3, 0, 0), (4, 0, 0), (4, 1, 0)], [], [(0, 1, 2)])
         ob.data.vertices[1].co = (float("nan"), 0.0, 0.0)
         rec = self.render_ok()
-        self.assertIn("Broken: every face has a vertex whose position is not a finite number", messages(rec))
+        self.assertIn("Broken: every face has a vertex at no usable position (NaN, infinite, or farther than 1e+15 units)",
+                      messages(rec))
         self.assertEqual(rec["stats"].objects, 1, "the cube still renders")
 
     def test_a_render_where_every_object_fails_is_an_error(self):
@@ -83,25 +84,54 @@ class BadMeshes(unittest.TestCase):
 
 
 class NonFiniteVertices(unittest.TestCase):
-    def test_only_the_faces_of_a_vertex_at_no_finite_position_are_lost(self):
-        """A 4 x 4 grid of unit squares seen from above, one inner vertex at NaN: its four faces
-        are not drawn (as a GPU leaves them), the other twelve are, with one warning."""
-        helpers.empty_scene(200, 200)
-        helpers.add_camera((0.0, 0.0, 8.0))
-        helpers.add_sun()
-        verts = [(x - 2.0, y - 2.0, 0.0) for y in range(5) for x in range(5)]
-        faces = [(y * 5 + x, y * 5 + x + 1, (y + 1) * 5 + x + 1, (y + 1) * 5 + x) for y in range(4) for x in range(4)]
-        ob = add_object("Grid", verts, [], faces)
-        ob.data.vertices[6].co = (float("nan"), 0.0, 0.0)  # (x, y) = (-1, -1): cells (0..1, 0..1)
-        bpy.context.scene.edgelight.use_lines = True
-        rec = helpers.render()
-        self.assertIn("Grid: 1 vertices have no finite position; the 4 faces using them are not drawn", messages(rec))
-        centres = [(x - 1.5, y - 1.5, 0.0) for y in range(4) for x in range(4)]
-        px = np.floor(helpers.project(rec, centres)).astype(int)
-        covered = np.asarray(rec["surface"])[px[:, 1], px[:, 0], 3] > 0.5
-        lost = [x < 2 and y < 2 for y in range(4) for x in range(4)]
-        self.assertEqual(covered.tolist(), [not k for k in lost])
-        self.assertTrue(np.isfinite(rec["pixels"]).all())
+    def test_only_the_faces_of_a_vertex_at_no_usable_position_are_lost(self):
+        """A 4 x 4 grid of unit squares seen from above, one inner vertex at NaN, or at infinity
+        (which Blender stores as the largest float): its four faces are not drawn (as a GPU
+        leaves them), the other twelve are, with one warning."""
+        for bad in (float("nan"), float("inf")):
+            helpers.empty_scene(200, 200)
+            helpers.add_camera((0.0, 0.0, 8.0))
+            helpers.add_sun()
+            verts = [(x - 2.0, y - 2.0, 0.0) for y in range(5) for x in range(5)]
+            faces = [(y * 5 + x, y * 5 + x + 1, (y + 1) * 5 + x + 1, (y + 1) * 5 + x) for y in range(4) for x in range(4)]
+            ob = add_object("Grid", verts, [], faces)
+            ob.data.vertices[6].co = (bad, -1.0, 0.0)  # (x, y) = (-1, -1): cells (0..1, 0..1)
+            bpy.context.scene.edgelight.use_lines = True
+            rec = helpers.render()
+            self.assertIn("Grid: 1 vertices at no usable position (NaN, infinite, or farther than 1e+15 units); "
+                          "the 4 faces using them are not drawn", messages(rec))
+            centres = [(x - 1.5, y - 1.5, 0.0) for y in range(4) for x in range(4)]
+            px = np.floor(helpers.project(rec, centres)).astype(int)
+            covered = np.asarray(rec["surface"])[px[:, 1], px[:, 0], 3] > 0.5
+            lost = [x < 2 and y < 2 for y in range(4) for x in range(4)]
+            self.assertEqual(covered.tolist(), [not k for k in lost], bad)
+            self.assertTrue(np.isfinite(rec["pixels"]).all())
+
+    def test_a_vertex_far_away_leaves_the_other_faces_rounded(self):
+        """A subdivided cube with one vertex pulled a million units away: the faces elsewhere
+        keep their area, so their edges stay rounded (judged against the whole mesh's size,
+        every face had looked flat and no band was drawn)."""
+        import bmesh
+        drawn = []
+        for far in (False, True):
+            helpers.empty_scene(200, 150)
+            helpers.add_camera((4.0, -5.0, 3.5))
+            helpers.add_sun()
+            bm = bmesh.new()
+            bmesh.ops.create_cube(bm, size=2.0)
+            bmesh.ops.subdivide_edges(bm, edges=bm.edges[:], cuts=1, use_grid_fill=True)
+            me = bpy.data.meshes.new("Part")
+            bm.to_mesh(me)
+            bm.free()
+            ob = bpy.data.objects.new("Part", me)
+            bpy.context.scene.collection.objects.link(ob)
+            if far:
+                low = min(range(len(me.vertices)), key=lambda i: tuple(me.vertices[i].co)[::-1])
+                me.vertices[low].co = (1e6, 0.0, -1.0)
+            rec = helpers.render()
+            self.assertNotIn("zero-area", messages(rec))
+            drawn.append(rec["stats"].edges_drawn)
+        self.assertGreater(drawn[1], 0.5 * drawn[0], drawn)
 
 class NativeLibraryProblems(unittest.TestCase):
     def render_with_library(self, path):

@@ -307,6 +307,53 @@ def steps():
     bpy.data.objects.remove(host)
     bpy.data.objects.remove(tile)
 
+    # 7b. The status bar and what is drawn follow the scene: a broken object's note goes with
+    # it, the edge counts follow a material change with the view unchanged, and a collection
+    # hidden with its eye in the view layer is not drawn (Blender 3.4 still lists its objects).
+    broken = zoo.mesh_object("Broken", [(5.0, 0.0, 0.0), (6.0, 0.0, 0.0), (6.0, 1.0, 0.0)], [(0, 1, 2)])
+    broken.data.vertices[1].co = (float("nan"), 0.0, 0.0)
+    yield 0.5
+    redraw()
+    yield 0.5
+    said = [r for r in state.reports if r.startswith("Broken:")]
+    bpy.data.objects.remove(broken)
+    yield 0.5
+    redraw()
+    yield 0.5
+    check("status bar: a broken object's note goes when it is deleted",
+          len(said) == 1 and not [r for r in state.reports if r.startswith("Broken:")], f"{said} -> {state.reports}")
+    c16 = counters()
+    cube_mat = bpy.data.materials["Cube"]
+    cube_mat.edgelight.radius = 0.0
+    yield 0.5
+    redraw()
+    yield 0.5
+    c17 = counters()
+    cube_mat.edgelight.radius = 0.05
+    check("status bar: edge counts follow a radius change, the view unchanged",
+          c17["edges_drawn"] < c16["edges_drawn"] and c17["view_changes"] == c16["view_changes"],
+          f"edges drawn {c16['edges_drawn']} -> {c17['edges_drawn']}")
+    extra = bpy.data.collections.new("Extra")
+    bpy.context.scene.collection.children.link(extra)
+    ball = zoo.box("Hidden", 0.5, (0.0, 2.5, 0.5), extra)
+    yield 0.5
+    redraw()
+    yield 0.5
+    shown = len(state.instances)
+    bpy.context.view_layer.layer_collection.children["Extra"].hide_viewport = True
+    yield 0.5
+    redraw()
+    yield 0.5
+    hidden = len(state.instances)
+    bpy.context.view_layer.layer_collection.children["Extra"].hide_viewport = False
+    yield 0.5
+    redraw()
+    yield 0.5
+    check("a collection hidden with its eye is not drawn, and is again when shown",
+          hidden == shown - 1 and len(state.instances) == shown, f"instances {shown} -> {hidden} -> {len(state.instances)}")
+    bpy.data.objects.remove(ball)
+    bpy.data.collections.remove(extra)
+
     # SVG export of the 3D view's own lines (not the scene camera's): the operator in the view.
     region.data.view_perspective = 'PERSP'
     svg_path = os.path.join(OUT, "view_lines.svg")
