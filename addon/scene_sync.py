@@ -125,25 +125,31 @@ def polygon_unit_normals(mesh, positions):
     stray vertex far away must not make the rest of the mesh's faces look flat."""
     n = compat.polygon_normals(mesh).astype(np.float64)
     area = _foreach(mesh.polygons, "area", np.float64)
-    length = np.linalg.norm(n, axis=1, keepdims=True)
-    ok = np.isfinite(length) & (length > 0.5) & (2.0 * area[:, None] > 1e-7 * _longest_sides(mesh, positions)[:, None])
-    return np.where(ok, n / np.where(ok, length, 1.0), 0.0).astype(np.float32)
+    length = np.linalg.norm(n, axis=1)
+    ok = np.isfinite(length) & (length > 0.5)
+    # A polygon has area by the rule below wherever its area is large against the whole mesh:
+    # only the others (usually none) need their sides measured.
+    extent = float(np.ptp(positions, axis=0).max()) if len(positions) else 0.0
+    doubt = np.flatnonzero(ok & ~(2.0 * area > 1e-7 * extent * extent))
+    if len(doubt):
+        ok[doubt] &= 2.0 * area[doubt] > 1e-7 * _longest_sides(mesh, positions, doubt)
+    ok = ok[:, None]
+    return np.where(ok, n / np.where(ok, length[:, None], 1.0), 0.0).astype(np.float32)
 
 
-def _longest_sides(mesh, positions):
-    """Each polygon's longest side, squared. Loops run polygon by polygon."""
-    start = _foreach(mesh.polygons, "loop_start", np.int64)
-    total = _foreach(mesh.polygons, "loop_total", np.int64)
-    if len(start) == 0:
-        return np.zeros(0)
+def _longest_sides(mesh, positions, polys):
+    """The longest side, squared, of each polygon in `polys`."""
+    start = _foreach(mesh.polygons, "loop_start", np.int64)[polys]
+    total = _foreach(mesh.polygons, "loop_total", np.int64)[polys]
     loop_vert = _foreach(mesh.loops, "vertex_index", np.int64)
-    poly_of_loop = np.repeat(np.arange(len(start)), total)
-    loops = np.arange(len(loop_vert))
-    end = start[poly_of_loop] + total[poly_of_loop]
-    next_loop = np.where(loops + 1 < end, loops + 1, start[poly_of_loop])
+    first = np.repeat(start, total)
+    k = np.arange(int(total.sum())) - np.repeat(np.cumsum(total) - total, total)  # corner within its polygon
+    here = first + k
+    after = first + (k + 1) % np.repeat(total, total)
     p = positions.astype(np.float64)
-    side = np.einsum("ij,ij->i", *(2 * [p[loop_vert[next_loop]] - p[loop_vert]]))
-    return np.maximum.reduceat(side, start)
+    d = p[loop_vert[after]] - p[loop_vert[here]]
+    side = np.einsum("ij,ij->i", d, d)
+    return np.maximum.reduceat(side, np.cumsum(total) - total)
 
 
 # Farther from the origin than this a vertex has no usable position: its squared distances
