@@ -380,6 +380,7 @@ def walk_instances(depsgraph, lookup, shown=None):
     Returns (instances, lights, not_drawn: {label: type name})."""
     instances, lights, not_drawn = [], [], {}
     override = getattr(depsgraph.view_layer, "material_override", None)
+    holdout = holdouts(depsgraph.view_layer)
     for inst in depsgraph.object_instances:
         if not inst.show_self:
             continue  # an instancer that shows only its instances (a particle emitter's Show Emitter off)
@@ -399,7 +400,7 @@ def walk_instances(depsgraph, lookup, shown=None):
         extract = lookup(geometry_key(ob, materials), ob, inst, materials)
         if extract is not None:
             instances.append(Instance(extract, np.array(inst.matrix_world, dtype=np.float32), ob.pass_index,
-                                      is_holdout(inst, depsgraph.view_layer)))
+                                      holdout(inst)))
     return instances, lights, not_drawn
 
 
@@ -420,13 +421,23 @@ def viewport_shown(view_layer, space=None):
     return shown
 
 
-def is_holdout(inst, view_layer):
-    """Whether the view layer masks the instance out, as Cycles and EEVEE do: the object's own
-    Holdout (Object > Visibility), or a holdout collection holding it or its instancer."""
-    for ob in (inst.object, inst.parent if inst.is_instance else None):
-        if ob is not None and (ob.is_holdout or ob.original.holdout_get(view_layer=view_layer)):
-            return True
-    return False
+def holdouts(view_layer):
+    """holdout(inst): whether the view layer masks the instance out, as Cycles and EEVEE do: the
+    object's own Holdout (Object > Visibility), or a holdout collection holding it or its
+    instancer. One question per object, however many instances."""
+    known = {}
+
+    def masked(ob):
+        key = ob.original.as_pointer()
+        if key not in known:
+            known[key] = bool(ob.is_holdout or ob.original.holdout_get(view_layer=view_layer))
+        return known[key]
+
+    def holdout(inst):
+        parent = inst.parent if inst.is_instance else None
+        return masked(inst.object) or (parent is not None and masked(parent))
+
+    return holdout
 
 
 def read_object(ob, label, materials, lib=None, line_settings=None, cache=None):
