@@ -211,7 +211,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             raise RenderRefused(f"the render region is empty ({region[2]} x {region[3]} pixels)")
         check_size(region[2], region[3])
         drawn, at = drawn_region(region, full_w, full_h, region_margin(lines.settings_of(scene.edgelight)))
-        check_size(drawn[2], drawn[3])
+        if max(drawn[2], drawn[3]) > gpu.capabilities.max_texture_size_get():
+            drawn, at = region, (0, 0)  # a region that just fits the GPU's textures: drawn without a margin
         camera = camera_for_render(depsgraph, full_w, full_h, drawn)
         crop = Crop(at[0], at[1], region[2], region[3])
         record["camera"] = camera_for_render(depsgraph, full_w, full_h, region)  # the pixels Blender gets

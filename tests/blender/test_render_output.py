@@ -270,9 +270,20 @@ class LoudFailures(unittest.TestCase):
         helpers.needs_gpu()
         import gpu
         helpers.open_sample("cube")
+        helpers.render(resolution=(8, 8))  # before Blender's first GPU context the limit reads 0
         limit = gpu.capabilities.max_texture_size_get()
+        self.assertGreaterEqual(limit, 2048)
         rec = helpers.render(resolution=(limit + 8, 8), expect_error=True)
         self.assertIn("textures go up to", rec["raised"])
+        # A region that just fits renders, drawn without its margin past the inner edge.
+        r = bpy.context.scene.render
+        r.use_border, r.use_crop_to_border = True, True
+        r.border_min_x, r.border_max_x, r.border_min_y, r.border_max_y = 0.0, 1.0, 0.0, 1.0
+        r.border_max_x = float(np.nextafter(np.float32(limit) / np.float32(limit + 16), np.float32(2.0)))
+        while int(np.float32(r.border_max_x) * np.float32(limit + 16)) < limit:
+            r.border_max_x = float(np.nextafter(np.float32(r.border_max_x), np.float32(2.0)))
+        rec = helpers.render(resolution=(limit + 16, 4))
+        self.assertEqual(np.asarray(rec["pixels"]).shape[:2], (4, limit))
 
     def test_a_failed_render_saves_no_frame(self):
         """An ERROR report is what stops Blender from writing the frame (and makes `-b -f` exit
