@@ -68,12 +68,17 @@ class Crop:
         return np.ascontiguousarray(image[self.dy:self.dy + self.h, self.dx:self.dx + self.w])
 
 
+# The most a render region is drawn past its inner edges, in pixels.
+MOST_MARGIN = 128
+
+
 def region_margin(line_settings):
     """Pixels drawn past a render region's inner edges: half the widest ink in pixels and its
-    3 x 3 window, at least a few pixels; a width in scene units counts as 32 pixels."""
-    widest = max((16.0 if st.scene_units else st.width / 2.0 for _, st in line_settings.styles),
-                 default=0.0) if line_settings is not None else 0.0
-    return int(min(128, math.ceil(widest) + 4))
+    3 x 3 window, at least a few pixels, at most MOST_MARGIN; ink of a width in scene units,
+    whose pixels grow near the camera, takes the most."""
+    widest = max((MOST_MARGIN if st.scene_units else max(st.width, st.min_pixels) / 2.0
+                  for _, st in line_settings.styles), default=0.0) if line_settings is not None else 0.0
+    return int(min(MOST_MARGIN, math.ceil(widest) + 4))
 
 
 def region_projection(projection, full_w, full_h, region):

@@ -166,10 +166,11 @@ def _segments_distance(a0, a1, b0, b1):
     b, c, f = np.einsum("...j,...j->...", d1, d2), np.einsum("...j,...j->...", d1, w), np.einsum("...j,...j->...", d2, w)
     tiny = np.finfo(np.float32).tiny
     denom = a * e - b * b
-    s = np.where(denom > 1e-12 * a * e, np.clip((b * f - c * e) / np.maximum(denom, tiny), 0.0, 1.0), 0.0)
-    t = (b * s + f) / np.maximum(e, tiny)
-    s = np.where(t < 0.0, np.clip(-c / np.maximum(a, tiny), 0.0, 1.0),
-                 np.where(t > 1.0, np.clip((b - c) / np.maximum(a, tiny), 0.0, 1.0), s))
+    with np.errstate(over="ignore"):  # a point's quotients overflow; np.where below discards them
+        s = np.where(denom > 1e-12 * a * e, np.clip((b * f - c * e) / np.maximum(denom, tiny), 0.0, 1.0), 0.0)
+        t = (b * s + f) / np.maximum(e, tiny)
+        s = np.where(t < 0.0, np.clip(-c / np.maximum(a, tiny), 0.0, 1.0),
+                     np.where(t > 1.0, np.clip((b - c) / np.maximum(a, tiny), 0.0, 1.0), s))
     t = np.where(e > tiny, np.clip(t, 0.0, 1.0), 0.0)
     s = np.where(a > tiny, s, 0.0)
     return np.linalg.norm(a0 + d1 * s[..., None] - b0 - d2 * t[..., None], axis=-1)

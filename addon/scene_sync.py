@@ -130,7 +130,7 @@ def polygon_unit_normals(mesh, positions):
     # A polygon has area by the rule below wherever its area is large against the whole mesh:
     # only the others (usually none) need their sides measured.
     extent = float(np.ptp(positions, axis=0).max()) if len(positions) else 0.0
-    doubt = np.flatnonzero(ok & ~(2.0 * area > 1e-7 * extent * extent))
+    doubt = np.flatnonzero(ok & ~(2.0 * area > 3e-7 * extent * extent))  # a side is at most sqrt(3) extents
     if len(doubt):
         ok[doubt] &= 2.0 * area[doubt] > 1e-7 * _longest_sides(mesh, positions, doubt)
     ok = ok[:, None]
@@ -163,17 +163,6 @@ def unusable_vertices(positions):
     return ~(np.abs(positions) <= FARTHEST).all(axis=1)
 
 
-def _broken_polygons(mesh, positions):
-    """Which polygons have a vertex at no usable position, or None when every vertex's is usable.
-    Loops run polygon by polygon, as triangle_edge_map takes them."""
-    bad = unusable_vertices(positions)
-    if not bad.any():
-        return None
-    total = _foreach(mesh.polygons, "loop_total", np.int64)
-    loop_bad = bad[_foreach(mesh.loops, "vertex_index", np.int64)]
-    return np.bincount(np.repeat(np.arange(len(total)), total), weights=loop_bad, minlength=len(total)) > 0
-
-
 def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None):
     """Arrays and chosen edges of an evaluated mesh. Raises SkipObject with a reason. With
     `cache` (render_cache.ExtractCache), an extraction of the same object with the same content
@@ -189,26 +178,41 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     tri_edges = triangle_edge_map(mesh, tri_loops)
     tri_slot = np.clip(compat.triangle_material_index(mesh), 0, max(len(materials) - 1, 0))
     tri_poly = _foreach(mesh.loop_triangles, "polygon_index", np.int64)
-    broken = _broken_polygons(mesh, positions)
-    dropped = None
-    if broken is not None:
-        # Not drawn, as a GPU leaves them: the faces with a vertex at no usable position.
+    bad = unusable_vertices(positions)
+    dropped, cut = None, None
+    if bad.any():
+        # Not drawn, as a GPU leaves them: the faces with a vertex at no usable position (the
+        # whole polygon, from its triangles: the loops' order is not relied on).
+        broken = np.zeros(len(mesh.polygons), bool)
+        broken[tri_poly[bad[tri_verts].any(axis=1)]] = True
         keep = ~broken[tri_poly]
         if not keep.any():
             raise SkipObject(f"{name}: every face has a vertex at no usable position (NaN, infinite, "
                              f"or farther than {FARTHEST:g} units)")
-        bad = unusable_vertices(positions)
-        dropped = (int(broken.sum()), int(bad.sum()))
+        if broken.any():
+            dropped = (int(broken.sum()), int(bad.sum()))
         tri_verts, tri_loops, tri_edges = tri_verts[keep], tri_loops[keep], tri_edges[keep]
         tri_slot, tri_poly = tri_slot[keep], tri_poly[keep]
         tri_count = len(tri_verts)
-        # The library takes finite positions only; no face left uses these.
+        # The library takes finite positions only; no face left uses these. An edge that reaches
+        # one ends instead at a copy of its other end, with no marks: a point, which no line
+        # type draws (it ran to wherever the vertex was put).
         positions = np.where(bad[:, None], 0.0, positions).astype(np.float32)
+        touch = bad[edges]
+        cut = np.flatnonzero(touch.any(axis=1))
+        if len(cut):
+            edges = edges.copy()
+            stays = np.where(touch[cut, 0], edges[cut, 1], edges[cut, 0])
+            edges[cut] = np.c_[stays, len(positions) + np.arange(len(cut))].astype(edges.dtype)
+            positions = np.concatenate([positions, positions[stays]])
     sharp = compat.edge_sharp(mesh)
     marks = (sharp.astype(np.uint32) * native.MARK_SHARP
              | compat.edge_seam(mesh).astype(np.uint32) * native.MARK_SEAM
              | compat.edge_freestyle(mesh).astype(np.uint32) * native.MARK_FREESTYLE)
     bevel = np.clip(compat.edge_bevel_weight(mesh), 0.0, 1.0).astype(np.float32)
+    if cut is not None and len(cut):
+        sharp, marks, bevel = sharp.copy(), marks.copy(), bevel.copy()
+        sharp[cut], marks[cut], bevel[cut] = False, 0, 0.0
     # Each triangle classifies by its polygon's normal: a sliver's own normal is noise, and a
     # zero-area piece along a polygon's side (collinear corners) would drop that side's edge.
     polygons = radius_clamp.Polygons(_foreach(mesh.polygons, "loop_start", np.int64),

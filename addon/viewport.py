@@ -76,6 +76,7 @@ class ViewportState:
         self.signature = None
         self.counted_at = -1e9
         self.count_cost = 0.0
+        self.counts_stale = True
         self.counters = Counters()
         self.line_settings = None
         self.view_batches = []
@@ -138,7 +139,7 @@ class ViewportState:
         signature = scene_signature(self, depsgraph.scene)
         if geometry or shading or removed or signature != self.signature:
             self.image_valid = False
-            self.counted_at = -1e9  # the status bar's edge counts follow the scene, not only the view
+            self.counts_stale = True  # the status bar's edge counts follow the scene, not only the view
         self.signature = signature
 
     def _extract(self, ob, inst, materials, lib):
@@ -208,10 +209,12 @@ class ViewportState:
             self.counters.view_changes += 1
             self.view_key = key
             self.image_valid = False
+            self.counts_stale = True
+        if self.counts_stale:
+            self._maybe_count_culled(camera, settings.highlights)
         if self.image_valid and not fresh:
             self.counters.cache_hits += 1
         else:
-            self._maybe_count_culled(camera, settings.highlights)
             scene = scene_sync.SceneData(self.instances, self.lights, self.ambient, [])
             s = frame.Settings(samples=settings.viewport_samples, highlights=settings.highlights,
                                transparent=depsgraph.scene.render.film_transparent, lines=self.line_settings)
@@ -265,22 +268,27 @@ class ViewportState:
 
     def _maybe_count_culled(self, camera, highlights):
         """The counts are statistics and cost a numpy pass over every edge (about 1 s for 750k
-        edges here): while the view keeps moving they are refreshed only after 20x their own
-        cost has passed (at least 0.5 s), so they take at most ~5% of the time; not at all
-        when no edge is drawn."""
+        edges here): while the view or the scene keeps changing they are refreshed only after
+        20x their own cost has passed (at least 0.5 s), so they take at most ~5% of the time
+        (a later draw, a cached one too, takes them once that has passed); not at all when no
+        edge is drawn."""
         now = time.monotonic()
         if not highlights:
             self.counters.edges_drawn = self.counters.edges_culled = 0
+            self.counts_stale = False
         elif now - self.counted_at >= max(0.5, 20.0 * self.count_cost):
             self._count_culled(camera)
             self.counted_at = time.monotonic()
             self.count_cost = self.counted_at - now
+            self.counts_stale = False
 
     def _count_culled(self, camera):
         """What the edge shader culls (both faces turned away, outside the view, W below one
         8-bit step), counted on the CPU once per view for the statistics."""
         drawn = culled = 0
         for inst in self.instances:
+            if inst.holdout:
+                continue  # a hole in the image has no bands
             for slot, edges in inst.mesh.edges.items():
                 keep = visible_edges(edges, inst.matrix, camera, inst.mesh.slot_shading[slot].K)
                 drawn += int(keep.sum())

@@ -83,7 +83,8 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
             s = gm.extract.slot_shading[slot]
             mode = _surface_mode(s, whiteout, inst.holdout)
             ids_of = (float(index + 1), float(first.get(slot, 0)))
-            outline = gm.outline.get(slot) if rounded else None
+            # A holdout has no bands, so nothing fills the strips the rounded outline leaves out.
+            outline = gm.outline.get(slot) if rounded and not inst.holdout else None
             if outline is None:
                 draws.setdefault((mode, 0), []).append((inst.matrix, s, batch, ids_of, None, cull))
                 continue

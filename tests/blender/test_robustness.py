@@ -96,7 +96,9 @@ class NonFiniteVertices(unittest.TestCase):
             faces = [(y * 5 + x, y * 5 + x + 1, (y + 1) * 5 + x + 1, (y + 1) * 5 + x) for y in range(4) for x in range(4)]
             ob = add_object("Grid", verts, [], faces)
             ob.data.vertices[6].co = (bad, -1.0, 0.0)  # (x, y) = (-1, -1): cells (0..1, 0..1)
-            bpy.context.scene.edgelight.use_lines = True
+            for k in range(len(ob.data.edges)):
+                helpers.mark_edge(ob.data, "sharp", k)
+            helpers.only_lines(bpy.context.scene, border=2.0, marked=2.0).marks = {'SHARP'}
             rec = helpers.render()
             self.assertIn("Grid: 1 vertices at no usable position (NaN, infinite, or farther than 1e+15 units); "
                           "the 4 faces using them are not drawn", messages(rec))
@@ -106,6 +108,13 @@ class NonFiniteVertices(unittest.TestCase):
             lost = [x < 2 and y < 2 for y in range(4) for x in range(4)]
             self.assertEqual(covered.tolist(), [not k for k in lost], bad)
             self.assertTrue(np.isfinite(rec["pixels"]).all())
+            # No ink across the hole: the marked edges that reached the vertex are not drawn
+            # (they had run to the origin, where it is put for the library), only the hole's
+            # border. Along the lines from its neighbours to the origin, inside the hole:
+            stray = [(-2.0 + 2.0 * t, -1.0 + t, 0.0) for t in (0.3, 0.5, 0.7)] + \
+                    [(-1.0 + t, -2.0 + 2.0 * t, 0.0) for t in (0.3, 0.5, 0.7)]
+            sx, sy = np.floor(helpers.project(rec, stray)).astype(int).T
+            self.assertEqual(float(np.asarray(rec["lines"])[sy, sx, 3].max()), 0.0, bad)
 
     def test_a_vertex_far_away_leaves_the_other_faces_rounded(self):
         """A subdivided cube with one vertex pulled a million units away: the faces elsewhere
