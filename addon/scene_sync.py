@@ -7,6 +7,7 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 
+import bpy
 import numpy as np
 
 from . import closed_surfaces, compat, native, radius_clamp, render_cache
@@ -412,7 +413,10 @@ def viewport_shown(view_layer, space=None):
     """shown(inst) for walk_instances in a 3D view: whether the object, or for an instance its
     instancer, is visible there (Object.visible_get: a collection hidden with its eye in the
     view layer, local view). Blender 3.4's viewport depsgraph still lists the objects of a
-    collection hidden with its eye. One question per instancer, however many instances."""
+    collection hidden with its eye. One question per instancer, however many instances; None
+    (nothing to ask) when no collection is hidden so and there is no local view."""
+    if getattr(space, "local_view", None) is None and not _any_layer_collection(view_layer, "hide_viewport"):
+        return None
     known = {}
 
     def shown(inst):
@@ -425,10 +429,24 @@ def viewport_shown(view_layer, space=None):
     return shown
 
 
+def _any_layer_collection(view_layer, flag):
+    """Whether any layer collection of the view layer has `flag` set."""
+    todo = list(view_layer.layer_collection.children)
+    while todo:
+        lc = todo.pop()
+        if getattr(lc, flag):
+            return True
+        todo.extend(lc.children)
+    return False
+
+
 def holdouts(view_layer):
     """holdout(inst): whether the view layer masks the instance out, as Cycles and EEVEE do: the
     object's own Holdout (Object > Visibility), or a holdout collection holding it or its
-    instancer. One question per object, however many instances."""
+    instancer. One question per object, however many instances; none at all in a file with no
+    holdout."""
+    if not _any_layer_collection(view_layer, "holdout") and not any(ob.is_holdout for ob in bpy.data.objects):
+        return lambda inst: False
     known = {}
 
     def masked(ob):
