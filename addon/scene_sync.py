@@ -155,8 +155,8 @@ def _longest_sides(mesh, positions, polys):
 
 # Farther from the origin than this a vertex has no usable position: its squared distances
 # overflow single precision, where the shaders compute (Blender stores an infinite coordinate
-# as the largest float).
-FARTHEST = 1e15
+# as the largest float). The library refuses such positions.
+FARTHEST = native.MAX_COORDINATE
 
 
 def unusable_vertices(positions):

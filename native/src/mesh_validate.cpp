@@ -3,6 +3,7 @@
 #include "error.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace el {
@@ -65,6 +66,16 @@ void check_finite(const float* v, uint32_t count, const char* what) {
             fail(EL_ERR_NON_FINITE, std::string(what) + " of vertex " + s(i / 3) + " is not finite");
 }
 
+void check_within(const float* v, uint32_t count) {
+    for (uint64_t i = 0; i < uint64_t(count) * 3; ++i)
+        if (!(std::fabs(double(v[i])) <= EL_MAX_COORDINATE)) {
+            char num[32];
+            std::snprintf(num, sizeof num, "%g", double(v[i]));
+            fail(EL_ERR_NON_FINITE, "position of vertex " + s(i / 3) + " has a coordinate " + num +
+                                        ", farther than EL_MAX_COORDINATE (1e15) from the origin");
+        }
+}
+
 void check_face_normals(const float* n, uint32_t count) {
     for (uint32_t t = 0; t < count; ++t) {
         const float x = n[3 * t], y = n[3 * t + 1], z = n[3 * t + 2];
@@ -101,6 +112,7 @@ void validate_mesh_desc(const el_mesh_desc& d) {
         fail(EL_ERR_INVALID_ARGUMENT, "edge_marks / edge_bevel_weights need host edges");
     }
     check_finite(d.positions, d.vertex_count, "position");
+    check_within(d.positions, d.vertex_count);
     if (d.vertex_normals) check_finite(d.vertex_normals, d.vertex_count, "normal");
     if (d.triangle_normals) check_face_normals(d.triangle_normals, d.triangle_count);
     if (d.triangle_count > 0) check_triangles(d);

@@ -150,8 +150,17 @@ el_tools::Camera camera_for(const Args& a, const std::vector<float>& p) {
 int main(int argc, char** argv) {
     return el_tools::run_tool<Args>("edgelight-render", kUsage, argc, argv, parse, [](const Args& args) {
         const auto t0 = std::chrono::steady_clock::now();
-        const el_tools::LoadedMesh mesh = el_tools::load_mesh(args.mesh);
-        const el_tools::Camera camera = camera_for(args, mesh.positions);
+        el_tools::LoadedMesh mesh = el_tools::load_mesh(args.mesh);
+        // Drawn about its bounding box's centre: the passes compute in single precision, which
+        // keeps about 7 digits of a world coordinate, so a part 1e7 from the origin would lose
+        // its shape. The camera's points move with it; what is drawn is the same.
+        const glm::dvec3 origin = el_tools::bounding_box(mesh.positions).centre();
+        for (size_t i = 0; i < mesh.positions.size(); ++i)
+            mesh.positions[i] = float(double(mesh.positions[i]) - origin[int(i % 3)]);
+        Args local = args;
+        local.eye -= origin;
+        local.target -= origin;
+        const el_tools::Camera camera = camera_for(local, mesh.positions);
         el_tools::Scene scene;
         scene.surface = el_tools::surface_corners(mesh, float(args.crease));
         scene.edges = el_tools::choose_edges(mesh, float(args.crease));

@@ -79,9 +79,14 @@ typedef struct el_mesh el_mesh;
                                                  even after orientation (non-orientable surface):
                                                  never convex, concave, crease or silhouette */
 
+/* The largest |coordinate| a position may have: past it single-precision squares of distances
+ * overflow (the shaders compute in single precision); el_mesh_create refuses it as
+ * EL_ERR_NON_FINITE. */
+#define EL_MAX_COORDINATE 1e15
+
 /* Everything the library needs to know about one mesh. Optional arrays may be NULL. */
 typedef struct el_mesh_desc {
-    const float* positions;          /* 3 * vertex_count */
+    const float* positions;          /* 3 * vertex_count, each coordinate within EL_MAX_COORDINATE */
     uint32_t vertex_count;
     const uint32_t* triangles;       /* 3 * triangle_count, may be 0 triangles if edges given */
     uint32_t triangle_count;

@@ -1,0 +1,58 @@
+// The tools' mesh reader (native/tools/mesh_io.cpp): equal positions welded across corners that
+// carry their own normals and across a file's meshes, and what it must refuse: a face index
+// that a loader clamped, a position past EL_MAX_COORDINATE.
+#include "mesh_io.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+std::string write_file(const std::string& name, const std::string& text) {
+    const auto path = std::filesystem::temp_directory_path() / ("edgelight_mesh_io_" + name);
+    std::ofstream(path) << text;
+    return path.string();
+}
+
+// A unit cube as an OBJ with a normal per face corner and its faces in two materials.
+const char* kCubeObj =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "vn 0 0 -1\nvn 0 0 1\nvn 0 -1 0\nvn 1 0 0\nvn 0 1 0\nvn -1 0 0\n"
+    "usemtl a\nf 1//1 4//1 3//1 2//1\nf 5//2 6//2 7//2 8//2\nf 1//3 2//3 6//3 5//3\n"
+    "usemtl b\nf 2//4 3//4 7//4 6//4\nf 3//5 4//5 8//5 7//5\nf 4//6 1//6 5//6 8//6\n";
+
+TEST(MeshIo, EqualPositionsAreWeldedAcrossNormalsAndMaterials) {
+    const el_tools::LoadedMesh m = el_tools::load_mesh(write_file("cube.obj", kCubeObj));
+    EXPECT_EQ(m.positions.size(), 8u * 3u);  // 24 corners with their own normals, two meshes
+    EXPECT_EQ(m.triangles.size(), 12u * 3u);
+}
+
+TEST(MeshIo, AClampedFaceIndexIsRefused) {
+    // assimp's OFF reader clamps the 5 to 2 and says so only in its log.
+    const std::string path = write_file("badidx.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n");
+    try {
+        el_tools::load_mesh(path);
+        FAIL() << "read";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("OFF: Vertex index is out of range"), std::string::npos) << e.what();
+    }
+    // The same file with the index in range is read.
+    EXPECT_NO_THROW(el_tools::load_mesh(write_file("goodidx.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")));
+}
+
+TEST(MeshIo, APositionPastTheLargestCoordinateIsRefused) {
+    const std::string tetra = "f 1 2 3\nf 1 2 4\nf 2 3 4\nf 1 3 4\n";
+    try {
+        el_tools::load_mesh(write_file("huge.obj", "v 3e38 0 0\nv 0 3e38 0\nv 0 0 3e38\nv -3e38 -3e38 -3e38\n" + tetra));
+        FAIL() << "read";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("farther than EL_MAX_COORDINATE"), std::string::npos) << e.what();
+    }
+    EXPECT_NO_THROW(el_tools::load_mesh(write_file("far.obj", "v 1e14 0 0\nv 0 1e14 0\nv 0 0 1e14\nv 0 0 0\n" + tetra)));
+}
+
+}  // namespace
