@@ -46,6 +46,15 @@ def mesh_object(name, verts, faces, location=(0.0, 0.0, 0.0), collection=None):
     return ob
 
 
+def subdivided_cube(cuts):
+    """A bmesh of a 2-unit cube centred at the origin, each face cut into (cuts + 1)^2 quads (an
+    imported part's grid of faces)."""
+    bm = bmesh.new()
+    bmesh.ops.create_cube(bm, size=2.0)
+    bmesh.ops.subdivide_edges(bm, edges=bm.edges[:], cuts=cuts, use_grid_fill=True)
+    return bm
+
+
 def rounded_part(name, bm, rgb, radius):
     """An object made from a bmesh (freed here), with one material rounding its edges at radius."""
     mesh = bpy.data.meshes.new(name)

@@ -175,9 +175,7 @@ class InconsistentWinding(unittest.TestCase):
         helpers.empty_scene(320, 240)
         helpers.add_camera((4.0, -5.0, 3.5))
         helpers.add_sun()
-        bm = bmesh.new()
-        bmesh.ops.create_cube(bm, size=2.0)
-        bmesh.ops.subdivide_edges(bm, edges=bm.edges[:], cuts=2, use_grid_fill=True)
+        bm = zoo.subdivided_cube(2)
         bm.faces.ensure_lookup_table()
         if flip:
             rng = np.random.default_rng(7)

@@ -11,6 +11,7 @@ import bpy
 import numpy as np
 
 import helpers
+import scene_zoo as zoo
 
 
 def add_object(name, verts, edges, faces, material=None):
@@ -120,15 +121,12 @@ class NonFiniteVertices(unittest.TestCase):
         """A subdivided cube with one vertex pulled a million units away: the faces elsewhere
         keep their area, so their edges stay rounded (judged against the whole mesh's size,
         every face had looked flat and no band was drawn)."""
-        import bmesh
         drawn = []
         for far in (False, True):
             helpers.empty_scene(200, 150)
             helpers.add_camera((4.0, -5.0, 3.5))
             helpers.add_sun()
-            bm = bmesh.new()
-            bmesh.ops.create_cube(bm, size=2.0)
-            bmesh.ops.subdivide_edges(bm, edges=bm.edges[:], cuts=1, use_grid_fill=True)
+            bm = zoo.subdivided_cube(1)
             me = bpy.data.meshes.new("Part")
             bm.to_mesh(me)
             bm.free()
