@@ -177,3 +177,17 @@ def polygon_normals(mesh):
     else:
         mesh.polygons.foreach_get("normal", out)
     return out.reshape(-1, 3)
+
+
+def declare_depth_write(info, mode):
+    """Declares how a program changes gl_FragDepth (programs.json depth_write: ANY, GREATER or
+    LESS) on its GPUShaderCreateInfo. Blender 4.x+ declares gl_FragDepth depth_unchanged for a
+    program that declares nothing, and a driver may then test and store the rasterised depth in
+    place of the written one (NVIDIA does: docs/lines.md, "Depth on every GPU"); Metal declares
+    no depth output at all. Where create-infos take it (4.5+), it is declared there. 4.2 has no
+    such call but defines come before its declaration, so depth_unchanged is defined as the
+    wanted layout; 3.4 declares no layout (the default is any), where the define is unused."""
+    if hasattr(info, "depth_write"):
+        info.depth_write(mode)
+    else:
+        info.define("depth_unchanged", "depth_" + mode.lower())

@@ -13,6 +13,7 @@ import os
 
 import gpu
 
+from .. import compat
 from . import shader_specs
 from .shader_specs import shader_dir
 
@@ -120,6 +121,8 @@ def _build(name, d, defines, source_dir=None):
     # Outputs a variant adds (a render pass asked for) follow the program's own.
     for slot, (type_name, var) in enumerate(shader_specs.outputs_of(d, defines)):
         info.fragment_out(slot, type_name, var)
+    if "depth_write" in d:
+        compat.declare_depth_write(info, d["depth_write"])
     info.vertex_source("\n".join(_read(f, source_dir) for f in d["vertex"]))
     info.fragment_source("\n".join(_read(f, source_dir) for f in d["fragment"]))
     try:

@@ -152,6 +152,14 @@ std::vector<std::string> program_names(const std::string& shader_dir) {
 
 namespace {
 
+// GLSL's layout qualifier for a programs.json depth_write value.
+std::string depth_layout(const std::string& mode, const std::string& program) {
+    if (mode == "ANY") return "depth_any";
+    if (mode == "GREATER") return "depth_greater";
+    if (mode == "LESS") return "depth_less";
+    throw std::runtime_error("programs.json, program '" + program + "': depth_write " + mode + " is none of ANY, GREATER, LESS");
+}
+
 // A program from its description `d` (a programs.json entry); files are read from `first_dir`
 // when they are there, else from `shader_dir`.
 AssembledProgram assemble(const std::string& shader_dir, const std::string& first_dir, const std::string& program,
@@ -187,6 +195,9 @@ AssembledProgram assemble(const std::string& shader_dir, const std::string& firs
             f << "layout(location = " << i << ") out " << glsl_type(p.iface.fragment_out[i].type, program) << " "
               << p.iface.fragment_out[i].name << ";\n";
         }
+        // A program that writes gl_FragDepth says how (programs.json depth_write), as the add-on
+        // declares it to Blender: a driver may otherwise keep the rasterised depth.
+        if (d.contains("depth_write")) f << "layout(" << depth_layout(d.at("depth_write").get<std::string>(), program) << ") out float gl_FragDepth;\n";
         f << join_files(shader_dir, d.at("fragment"), first_dir);
         p.fragment = f.str();
     } catch (const nlohmann::json::exception& e) {
