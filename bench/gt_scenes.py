@@ -24,17 +24,24 @@ CREASE = math.radians(30.0)
 RESOLUTION = (480, 360)  # the ground truth's frame: its regions are saved at this size
 REF_SEGMENTS = 32        # the reference fillets' segments
 MASK_DILATE = 3
+CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"  # libcgal-demo's meshes
 
 
 def off_mesh(name):
-    """(vertices, faces) of libcgal-demo's data/meshes/NAME.off (from EDGELIGHT_MESH_DIR or the
-    Debian package's data.tar.gz)."""
-    path = os.path.join(os.environ.get("EDGELIGHT_MESH_DIR", os.path.join(ROOT, "build", "meshes")), name + ".off")
+    """(vertices, faces) of libcgal-demo's data/meshes/NAME.off: EDGELIGHT_MESH_DIR/NAME.off (ctest
+    passes the build's meshes, cmake/SampleMeshes.cmake extracts them; unset: build/meshes), else
+    the Debian package's data.tar.gz (the benchmarks' other parts)."""
+    mesh_dir = os.environ.get("EDGELIGHT_MESH_DIR") or os.path.join(ROOT, "build", "meshes")
+    path = os.path.join(mesh_dir, name + ".off")
     if os.path.exists(path):
-        text = open(path).read()
-    else:
-        with tarfile.open("/usr/share/doc/libcgal-dev/data.tar.gz") as tar:
+        with open(path) as f:
+            text = f.read()
+    elif os.path.exists(CGAL_DATA):
+        with tarfile.open(CGAL_DATA) as tar:
             text = tar.extractfile(f"data/meshes/{name}.off").read().decode()
+    else:
+        raise FileNotFoundError(f"{name}.off: neither {path} (EDGELIGHT_MESH_DIR; the meshes "
+                                f"cmake/SampleMeshes.cmake extracts) nor {CGAL_DATA} (libcgal-demo)")
     words = [w for line in text.splitlines() for w in line.split("#")[0].split()]
     nv, nf = int(words[1]), int(words[2])
     vals = words[4:]

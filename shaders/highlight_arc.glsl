@@ -1,12 +1,15 @@
 /* The rounded-edge integral of one pixel (docs/highlight_math.md): the float path of
  * native/src/highlight_arc.cpp and the table lookup of highlight_table.cpp, step for step, so
  * the native tests of that code speak for this shader. Needs the sampler cos_power_table and the
- * push constant table_params = (layout, m_max, warp_c, unused). The layout is also fixed when the
- * program is built (EL_TABLE_LAYOUT: passes/frame.py defines it from the uploaded table): llvmpipe
- * runs fragments as SIMD lanes with masks and pays for both sides of a branch on a uniform, so the
- * lookup code of the other layouts must not be in the program at all. */
+ * table's el_table_info fixed when the program is built (shaders/passes.json: EL_TABLE_LAYOUT,
+ * EL_TABLE_M_MAX, EL_TABLE_WARP_C): llvmpipe runs fragments as SIMD lanes with masks and pays for
+ * both sides of a branch on a uniform, so the lookup code of the other layouts must not be in the
+ * program at all, and constants are no push constants (Vulkan and Metal guarantee 128 bytes). */
 #ifndef EL_TABLE_LAYOUT
 #define EL_TABLE_LAYOUT 2 /* EL_TABLE_BICUBIC, the library's default */
+#endif
+#if !defined(EL_TABLE_M_MAX) || !defined(EL_TABLE_WARP_C)
+#error "the highlight table's m_max and warp_c are defined when the program is built (shaders/passes.json)"
 #endif
 #define EL_PI 3.14159265358979
 #define EL_HALF_PI 1.57079632679490
@@ -43,21 +46,35 @@ float el_safe_length(vec3 v)
   return s * sqrt(dot(v, v));
 }
 
-/* v * 2^-e with the largest component in [0.5, 1): exact, so directions keep every bit. */
+/* v * 2^-e with the largest component in [0.5, 1): exact, so directions keep every bit. As
+ * frexp and ldexp (GLSL 4.00), from the float's bits: 2^-e in two halves, each a normal float. */
 vec3 el_pow2_scale(vec3 v)
 {
-  int e;
-  frexp(el_max3(v), e);
-  return vec3(ldexp(v.x, -e), ldexp(v.y, -e), ldexp(v.z, -e));
+  float m = el_max3(v);
+  if (!(m > 0.0) || isinf(m)) {
+    return v; /* frexp: e = 0 */
+  }
+  if (m < 1.17549435e-38) { /* subnormal: its exponent field is 0 */
+    v *= 18446744073709551616.0; /* 2^64, exact */
+    m *= 18446744073709551616.0;
+  }
+  int e = int((floatBitsToUint(m) >> 23) & 0xffu) - 126;
+  int half_e = e / 2;
+  v *= uintBitsToFloat(uint(127 - half_e) << 23);
+  return v * uintBitsToFloat(uint(127 - (e - half_e)) << 23);
 }
 
 /* a*b - c*d with a single rounding (Kahan): tiny cross products of unit vectors stay exact. */
 float el_diff_of_products(float a, float b, float c, float d)
 {
+#if __VERSION__ >= 400
   float w = c * d;
   float e = fma(-c, d, w);
   float f = fma(a, b, -w);
   return f + e;
+#else
+  return a * b - c * d; /* GLSL 3.30 (OpenGL 3.3) has no fma: two roundings */
+#endif
 }
 
 vec3 el_cross_exact(vec3 a, vec3 b)
@@ -116,9 +133,9 @@ vec4 el_table_row(float m)
     out_scale = 1.0;
   }
   else {
-    y = log(m) / log(table_params.y) * last_row;
-    float phi_end = EL_TABLE_LAYOUT == 2 ? min(1.57079632679, el_bicubic_phi_end(m, table_params.z))
-                                         : min(1.57079632679, table_params.z / sqrt(m));
+    y = log(m) / log(EL_TABLE_M_MAX) * last_row;
+    float phi_end = EL_TABLE_LAYOUT == 2 ? min(1.57079632679, el_bicubic_phi_end(m, EL_TABLE_WARP_C))
+                                         : min(1.57079632679, EL_TABLE_WARP_C / sqrt(m));
     phi_to_texel = float(size.x - 1) / phi_end;
     out_scale = 1.0 / sqrt(m);
   }

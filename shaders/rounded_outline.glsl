@@ -229,12 +229,12 @@ vec4 el_outline_edge_list(int tri, int texel)
 /* For the first four of triangle `tri`'s listed edges, at this vertex (clip position `clip`),
  * el_outline_strip's values (the strip at p0 returned), to be interpolated without perspective:
  * a triangle's first four edges (its own sides and the nearest) cost the vertex shader only.
- * Each end's cut and arc are packed as two halves (packHalf2x16) in end0 and end1: four flat
+ * Each end's cut and arc are packed as two halves (half_pack.glsl) in end0 and end1: four flat
  * floats an edge would take the surface program past the 60 varying components GL promises. */
 vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out vec4 strip1, out vec4 length_px,
                        out uvec4 end0, out uvec4 end1)
 {
-  end0 = uvec4(packHalf2x16(vec2(0.0)));
+  end0 = uvec4(el_pack_half2(vec2(0.0)));
   end1 = end0;
   dist = vec4(0.0);
   along_t = vec4(0.0);
@@ -258,8 +258,8 @@ vec4 el_outline_strips(int tri, vec4 clip, out vec4 dist, out vec4 along_t, out 
     if (w0 < 0.0) {
       continue;
     }
-    end0[k] = packHalf2x16(vec2(c.x, h.x));
-    end1[k] = packHalf2x16(vec2(c.y, h.y));
+    end0[k] = el_pack_half2(vec2(c.x, h.x));
+    end1[k] = el_pack_half2(vec2(c.y, h.y));
     dist[k] = d;
     along_t[k] = a;
     strip1[k] = w1;

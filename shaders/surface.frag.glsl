@@ -15,7 +15,7 @@ void main()
   vec4 ends = vec4(0.0);
   for (int k = 0; k < 4; k++) {
     float end_px;
-    vec2 e0 = unpackHalf2x16(outline_end0[k]), e1 = unpackHalf2x16(outline_end1[k]);
+    vec2 e0 = el_unpack_half2(outline_end0[k]), e1 = el_unpack_half2(outline_end1[k]);
     int part = el_strip_part(outline_strip0[k], outline_strip1[k], outline_along[k], outline_length[k], outline_dist[k],
                              vec2(e0.x, e1.x), vec2(e0.y, e1.y), end_px);
     el_tally_strip(part, end_px, tally, ends);

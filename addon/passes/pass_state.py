@@ -67,14 +67,20 @@ def bind_inputs(shader, pass_name, targets):
         shader_lib.set_sampler(shader, sampler, getattr(targets, target))
 
 
+def float_literal(x):
+    """A GLSL float literal of x, as edgelight-render writes it (%.9e: a float32 round-trips)."""
+    return f"{float(x):.9e}"
+
+
 def table_defines(pass_name, info):
-    """{define: value} the pass fixes from the table's el_table_info (`info`: field -> value)."""
-    return {define: int(info[field]) for define, field in _pass(pass_name)["table"]["defines"].items()}
+    """{define: value} the pass fixes from the table's el_table_info (`info`: field -> value):
+    `defines` as integers, `float_defines` as float literals."""
+    t = _pass(pass_name)["table"]
+    out = {define: int(info[field]) for define, field in t["defines"].items()}
+    out.update((define, float_literal(info[field])) for define, field in t.get("float_defines", {}).items())
+    return out
 
 
 def bind_table(shader, pass_name, texture, info):
-    """The table's texture on its sampler, and the push constants made from its el_table_info."""
-    t = _pass(pass_name)["table"]
-    shader_lib.set_sampler(shader, t["sampler"], texture)
-    for name, terms in t["push_constants"].items():
-        shader_lib.set_uniform(shader, name, tuple(float(info[x] if isinstance(x, str) else x) for x in terms))
+    """The table's texture on its sampler (its el_table_info is in the program: table_defines)."""
+    shader_lib.set_sampler(shader, _pass(pass_name)["table"]["sampler"], texture)

@@ -7,7 +7,7 @@
 #ifdef EL_EDGE_FLOOR
 void main()
 {
-  vec4 inputs = vec4(edge_point, edge_radius) + table_params + base_color + spec_color + tint +
+  vec4 inputs = vec4(edge_point, edge_radius) + EL_TABLE_M_MAX + base_color + spec_color + tint +
                 texelFetch(cos_power_table, ivec2(0), 0).r + texelFetch(surface_depth, ivec2(0), 0).r +
                 texelFetch(surface_color, ivec2(0), 0).r;
 #ifdef EL_EDGE_IDS

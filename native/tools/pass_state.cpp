@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
@@ -73,17 +74,10 @@ PassSpec read_pass(const json& p) {
         for (const auto& [define, field] : t.at("defines").items()) {
             s.table_defines.emplace_back(define, field.get<std::string>());
         }
-        for (const auto& [name, terms] : t.at("push_constants").items()) {
-            std::vector<PassSpec::Term> out;
-            for (const auto& term : terms) {
-                if (term.is_string()) {
-                    out.push_back({term.get<std::string>(), 0.0f});
-                } else {
-                    out.push_back({"", term.get<float>()});
-                }
+        if (t.contains("float_defines")) {
+            for (const auto& [define, field] : t.at("float_defines").items()) {
+                s.table_float_defines.emplace_back(define, field.get<std::string>());
             }
-            if (out.size() != 4) throw std::runtime_error("passes.json: table push constant " + name + " is not 4 terms");
-            s.table_push_constants.emplace_back(name, out);
         }
     }
     return s;
@@ -142,17 +136,10 @@ std::vector<std::pair<std::string, std::string>> table_defines(const PassSpec& p
     for (const auto& [define, field] : pass.table_defines) {
         out.emplace_back(define, std::to_string(int(table_field(info, field))));
     }
-    return out;
-}
-
-std::vector<std::pair<std::string, glm::vec4>> table_push_constants(const PassSpec& pass, const el_table_info& info) {
-    std::vector<std::pair<std::string, glm::vec4>> out;
-    for (const auto& [name, terms] : pass.table_push_constants) {
-        glm::vec4 v;
-        for (int i = 0; i < 4; ++i) {
-            v[i] = terms[i].field.empty() ? terms[i].number : float(table_field(info, terms[i].field));
-        }
-        out.emplace_back(name, v);
+    for (const auto& [define, field] : pass.table_float_defines) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.9e", table_field(info, field));
+        out.emplace_back(define, text);
     }
     return out;
 }

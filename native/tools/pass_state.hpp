@@ -30,15 +30,11 @@ struct PassSpec {
     bool depth_write = false;
     std::string blend;     // NONE, ALPHA_PREMULT, ADDITIVE_PREMULT
     GLenum cull_face = 0;  // 0: both faces drawn
-    // The F(phi, m) table, if the pass reads it: its sampler, defines fixed from el_table_info
-    // fields, and push constants of four terms, each a field name or a number.
-    struct Term {
-        std::string field;  // empty: the number
-        float number = 0.0f;
-    };
+    // The F(phi, m) table, if the pass reads it: its sampler, and defines fixed from el_table_info
+    // fields (define -> field), written as integers or as float literals.
     std::string table_sampler;
     std::vector<std::pair<std::string, std::string>> table_defines;
-    std::vector<std::pair<std::string, std::vector<Term>>> table_push_constants;
+    std::vector<std::pair<std::string, std::string>> table_float_defines;
 };
 
 struct PassSpecs {
@@ -50,9 +46,9 @@ struct PassSpecs {
 // Reads `shader_dir`/passes.json; throws std::runtime_error naming what is missing or unknown.
 PassSpecs read_pass_specs(const std::string& shader_dir);
 
-// The table's defines and push constants for a pass, from the table's el_table_info.
+// The table's defines for a pass, from the table's el_table_info: integers, then float literals
+// (%.9e, as the add-on writes them: addon/passes/pass_state.py).
 std::vector<std::pair<std::string, std::string>> table_defines(const PassSpec& pass, const el_table_info& info);
-std::vector<std::pair<std::string, glm::vec4>> table_push_constants(const PassSpec& pass, const el_table_info& info);
 
 // The targets of one size, each made on first use in its passes.json format, and a framebuffer
 // per pass and program.

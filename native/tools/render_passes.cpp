@@ -161,7 +161,6 @@ void Renderer::draw(Uploaded& up, const Camera& camera, int samples) {
             if (!scene.edge_depth_test) gl::Disable(GL_DEPTH_TEST);  // a test's check of the depth test
             edge.uniform_buf("frame", r.ubo.id());
             edge.texture(edge_pass.table_sampler, *r.table);
-            for (const auto& [name, value] : table_push_constants(edge_pass, r.table_info)) edge.set(name, value);
             r.shading(edge, m);
             edge.set("tint", glm::vec4(m.tint, m.K));
             up.edge_vao.draw_triangles();

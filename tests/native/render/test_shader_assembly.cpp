@@ -3,19 +3,40 @@
 // preamble, and a declaration added to programs.json without its use (or the reverse) fails here.
 #include "gl_objects.hpp"
 #include "offscreen_gl.hpp"
+#include "pass_state.hpp"
 #include "shader_assembly.hpp"
 
+#include <edgelight/edgelight.h>
 #include <gtest/gtest.h>
 
 namespace {
 
 class ShaderAssembly : public OffscreenGlTest {};
 
+// The defines a program is built with from the library's default table, where a pass of
+// shaders/passes.json reads the table with it (the edge program: its m_max and warp_c).
+std::vector<std::pair<std::string, std::string>> table_defines_of(const std::string& program) {
+    const auto specs = el_tools::read_pass_specs(EDGELIGHT_SHADER_DIR);
+    for (const auto& [name, pass] : specs.passes) {
+        if (pass.program != program || pass.table_sampler.empty()) continue;
+        const el_table_desc desc = EL_TABLE_DEFAULT_DESC;
+        el_highlight_table* t = nullptr;
+        el_table_info info{};
+        if (el_highlight_table_create(&desc, &t) != EL_OK || el_highlight_table_get_info(t, &info) != EL_OK) {
+            ADD_FAILURE() << "the default table";
+        }
+        el_highlight_table_destroy(t);
+        return el_tools::table_defines(pass, info);
+    }
+    return {};
+}
+
 TEST_F(ShaderAssembly, EveryProgramCompilesAndLinks) {
     const auto names = el_tools::program_names(EDGELIGHT_SHADER_DIR);
     ASSERT_GE(names.size(), 4u);  // surface, edge_highlight, composite, line
     for (const auto& name : names) {
-        EXPECT_NO_THROW({ el_tools::Program p(el_tools::assemble_program(EDGELIGHT_SHADER_DIR, name)); }) << name;
+        EXPECT_NO_THROW({ el_tools::Program p(el_tools::assemble_program(EDGELIGHT_SHADER_DIR, name, table_defines_of(name))); })
+            << name;
     }
 }
 
@@ -58,8 +79,9 @@ TEST_F(ShaderAssembly, BenchVariantsCompileAndLink) {
     for (const char* method : {"0", "1", "2", "3"}) {
         for (const char* tight : {"true", "false"}) {
             for (bool floor : {false, true}) {
-                std::vector<std::pair<std::string, std::string>> defines = {
-                    {"EL_EDGE_METHOD", method}, {"EL_TIGHT_QUADS", tight}};
+                auto defines = table_defines_of("edge_highlight");
+                defines.emplace_back("EL_EDGE_METHOD", method);
+                defines.emplace_back("EL_TIGHT_QUADS", tight);
                 if (floor) defines.emplace_back("EL_EDGE_FLOOR", "1");
                 el_tools::AssembledProgram p;
                 ASSERT_NO_THROW(p = el_tools::assemble_variant(EDGELIGHT_SHADER_DIR, variants, defines));
@@ -68,7 +90,7 @@ TEST_F(ShaderAssembly, BenchVariantsCompileAndLink) {
             }
         }
     }
-    const auto product = el_tools::assemble_program(EDGELIGHT_SHADER_DIR, "edge_highlight");
+    const auto product = el_tools::assemble_program(EDGELIGHT_SHADER_DIR, "edge_highlight", table_defines_of("edge_highlight"));
     for (const char* variant_only : {"edge_color", "EL_EDGE_METHOD", "EL_TIGHT_QUADS", "EL_EDGE_FLOOR", "quadrature"}) {
         EXPECT_EQ(product.vertex.find(variant_only), std::string::npos) << variant_only;
         EXPECT_EQ(product.fragment.find(variant_only), std::string::npos) << variant_only;
