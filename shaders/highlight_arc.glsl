@@ -54,7 +54,7 @@ vec3 el_pow2_scale(vec3 v)
   if (!(m > 0.0) || isinf(m)) {
     return v; /* frexp: e = 0 */
   }
-  if (m < 1.17549435e-38) { /* subnormal: its exponent field is 0 */
+  if (m < 1.17549435e-38) {      /* subnormal: its exponent field is 0 */
     v *= 18446744073709551616.0; /* 2^64, exact */
     m *= 18446744073709551616.0;
   }
