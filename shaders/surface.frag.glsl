@@ -8,6 +8,14 @@
 #endif
 void main()
 {
+  /* The triangle's plane, from the pixel's footprint (before any discard: derivatives are
+   * undefined after one), turned to face the eye: which side of it is seen is then geometry,
+   * not gl_FrontFacing, whose sense under Blender's offscreen targets differs between drivers
+   * (Mesa's softpipe reports every face of a cube the other way round from llvmpipe), nor the
+   * sign of a derivative (GLSL leaves it to the implementation: Blender's DFDX_SIGN). */
+  vec3 plane = cross(dFdx(world_pos), dFdy(world_pos));
+  vec3 to_eye = frame.eye.w > 0.5 ? frame.eye.xyz - world_pos : -frame.view_dir.xyz;
+  plane = dot(plane, to_eye) < 0.0 ? -plane : plane;
 #ifdef EL_ROUNDED_OUTLINE
   /* The strips a rounded silhouette leaves out, and past a corner the ball's circle
    * (rounded_outline.glsl). */
@@ -36,9 +44,9 @@ void main()
   }
 #endif
   out_depth = 1.0 / max(view_depth, 1e-30); /* 0 where nothing was drawn: infinitely far */
-  /* Seen from its front: a mirrored object (negative determinant) reverses its triangles'
-   * winding on screen, and world_nor (el_transform_normal) already points outward. */
-  bool front = gl_FrontFacing == (determinant(mat3(model)) >= 0.0);
+  /* Seen from its front: the side world_nor points to (outward, a mirrored object's too:
+   * el_transform_normal) faces the eye. */
+  bool front = dot(world_nor, plane) >= 0.0;
 #ifdef EL_SURFACE_IDS
   /* Which instance and face covers the pixel, for the line pass's visibility (docs/lines.md):
    * surface_ids.y is the id of the batch's first triangle; 0 where nothing was drawn. The
