@@ -21,7 +21,9 @@ import helpers  # noqa: E402
 
 
 def probe_gpu():
-    """None if the GPU probe drew and read back a frame, else the reason it could not."""
+    """None if the GPU probe drew and read back a frame, else the reason it could not. An entry
+    that names its rasteriser (EDGELIGHT_EXPECT_GPU: a word of the renderer's name, softpipe)
+    must get it: another would pass for it unseen."""
     cmd = helpers.blender_command(os.path.join(HERE, "gpu_probe.py"))
     try:
         run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
@@ -32,6 +34,11 @@ def probe_gpu():
             _, status, text = line.split(" ", 2)
             if status == "ok":
                 print(f"blender {bpy.app.version_string}: GPU: {text}")
+                want = os.environ.get("EDGELIGHT_EXPECT_GPU", "")
+                if want and want not in text:
+                    print(f"blender {bpy.app.version_string}: 0 passed, 1 failed: expected the {want} rasteriser")
+                    sys.stdout.flush()
+                    os._exit(1)
                 return None
             return text
     tail = (run.stderr or run.stdout).strip().splitlines()[-1:] or ["no output"]
