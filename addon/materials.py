@@ -1,6 +1,9 @@
 """What the passes need to know about a material, read once per frame."""
 import math
+import os
 from dataclasses import dataclass, replace
+
+import bpy
 
 from . import color_ramp, compat
 from . import material_defaults as defaults
@@ -137,9 +140,23 @@ def usable_toon(material_name, toon):
     image = toon.image
     if toon.mode != SURFACE_MODES["XTOON"] or image is None:
         return toon, ""
+    missing = image_file_missing(image)
+    if missing:
+        return (replace(toon, image=None),
+                f"material '{material_name}': X-Toon image '{image.name}': its file {missing} is not found; "
+                f"the built-in map is used")
     w, h = image.size
     if w >= 2 and h >= 2 and image.channels >= 1:
         return toon, ""
     return (replace(toon, image=None),
             f"material '{material_name}': X-Toon image '{image.name}' is {w} x {h} (it needs at least "
             f"2 x 2 pixels); the built-in map is used")
+
+
+def image_file_missing(image):
+    """The path of an image's file when it reads from one that is not there (Blender then gives it
+    a size of 0 x 0), else ""."""
+    if image.source not in {'FILE', 'SEQUENCE', 'MOVIE'} or image.packed_file is not None:
+        return ""
+    path = bpy.path.abspath(image.filepath, library=image.library)
+    return "" if os.path.exists(path) else f"'{image.filepath}'"

@@ -7,6 +7,12 @@ import numpy as np
 from .. import compat
 
 RAMP_SIZE = 256
+# Texels an X-Toon map keeps per axis: the lookup reads lighting (x) and depth or orientation
+# (y), each a value in [0, 1] filtered linearly, so 512 levels per axis resolve more than an
+# 8-bit image's steps; a larger image is box-averaged down to this, which also keeps any map
+# within every GPU's texture limit (OpenGL 3.3 promises 1024) and a 8192 x 8192 image from
+# costing a GiB of texture (docs/lines.md, "Toon shading").
+MAP_MAX = 512
 _ramps = {}
 _maps = {}
 
@@ -57,19 +63,43 @@ def _srgb_to_linear(c):
     return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
 
+def box_reduce(px, axis, size):
+    """px averaged along `axis` into `size` equal spans (each output texel the mean of the input
+    texels whose centres fall in its span); unchanged if it has no more than `size`."""
+    n = px.shape[axis]
+    if n <= size:
+        return px
+    starts = (np.arange(size) * n) // size
+    counts = np.diff(np.r_[starts, n]).astype(np.float32)
+    shape = [1] * px.ndim
+    shape[axis] = size
+    return np.add.reduceat(px, starts, axis=axis) / counts.reshape(shape)
+
+
 def image_texels(image):
-    """(h, w, 4) scene-linear texels of a Blender image (rows bottom-up, as Blender stores them)."""
+    """(h, w, 4) scene-linear texels of a Blender image (rows bottom-up, as Blender stores them),
+    reduced to at most MAP_MAX per axis."""
     w, h = image.size
     if w < 2 or h < 2:
         raise ValueError(f"X-Toon image '{image.name}' is {w} x {h}; it needs at least 2 x 2 pixels")
-    px = np.empty(w * h * image.channels, np.float32)
+    c = image.channels
+    px = np.empty(w * h * c, np.float32)
     image.pixels.foreach_get(px)
-    px = px.reshape(h, w, image.channels)
-    if image.channels < 4:
-        px = np.concatenate([px, np.ones((h, w, 4 - image.channels), np.float32)], axis=2)
-    if not image.is_float and image.colorspace_settings.name == 'sRGB':
+    px = px.reshape(h, w, c)
+    srgb = not image.is_float and image.colorspace_settings.name == 'sRGB'
+    if srgb and (w > MAP_MAX or h > MAP_MAX):
+        # Averaged in linear light: the rows are linearised a band at a time, in place, so a large
+        # image costs its own floats and little more.
+        for y0 in range(0, h, 256):
+            band = px[y0:y0 + 256, :, :min(c, 3)]
+            band[...] = _srgb_to_linear(band)
+        srgb = False
+    px = box_reduce(box_reduce(px, 1, MAP_MAX), 0, MAP_MAX)
+    if c < 4:
+        px = np.concatenate([px, np.ones(px.shape[:2] + (4 - c,), np.float32)], axis=2)
+    if srgb:
         px[..., :3] = _srgb_to_linear(px[..., :3])
-    return px
+    return np.ascontiguousarray(px, np.float32)
 
 
 def map_texture(toon, base):

@@ -1,4 +1,6 @@
 """Toon shading in final renders: the shade ramp and X-Toon."""
+import os
+import tempfile
 import unittest
 
 import bpy
@@ -149,6 +151,61 @@ class XToon(unittest.TestCase):
         rim = helpers.sample(surf, helpers.project(rec, [(0.97, -0.24, 0.0)])[0])[:3]
         # The built-in map: lit material colour facing the eye, greyer and darker at the outline.
         self.assertGreater(centre.sum(), rim.sum() + 0.3)
+
+    def xtoon_scene(self, make_image):
+        """A toon sphere with make_image() as its X-Toon map along depth, the near and far limits
+        straddling the sphere's front (y about 0.25); returns (material, image)."""
+        helpers.empty_scene(200, 200, highlights=False)
+        _, mat = toon_sphere()
+        img = make_image()
+        s = mat.edgelight
+        s.shading, s.xtoon_image, s.xtoon_axis = 'XTOON', img, 'DEPTH'
+        s.xtoon_near, s.xtoon_far = 3.0, 11.0
+        helpers.add_camera((0.0, -6.0, 0.0), target=(0.0, 0.0, 0.0), lens=35.0)
+        helpers.add_sun((0.3, -1.0, 0.4))
+        return mat, img
+
+    def test_a_map_past_the_texture_limit_is_reduced(self):
+        """20000 x 2 (past every GPU's texture limit: it failed the frame with a raw `unknown
+        error`) and 4096 x 4096 render as the same ramp at MAP_MAX x 8 (averaged down to at most
+        MAP_MAX texels an axis, a ramp stays a ramp)."""
+        toon = helpers.addon().passes.toon
+        colours = {}
+        def ramp_image(w, h):
+            img = bpy.data.images.new(f"xtoon_{w}", w, h, float_buffer=True)
+            px = np.zeros((h, w, 4), np.float32)
+            px[..., 1] = (np.arange(w) + 0.5) / w  # green rises with lighting (x)
+            px[..., 2] = 0.25
+            px[..., 3] = 1.0
+            img.pixels.foreach_set(px.ravel())
+            return img
+
+        for w, h in ((toon.MAP_MAX, 8), (20000, 2), (4096, 4096)):
+            _, img = self.xtoon_scene(lambda: ramp_image(w, h))
+            rec = helpers.render()
+            self.assertFalse([r for r in rec.get("reports", []) if "rror" in str(r)], rec.get("reports"))
+            colours[w] = helpers.sample(rec["surface"], np.array([100.0, 100.0]))[:3]
+            texels = toon.image_texels(img)
+            self.assertLessEqual(max(texels.shape[:2]), toon.MAP_MAX)
+            # The reduction keeps the mean of each span: x's ramp stays a ramp.
+            np.testing.assert_allclose(texels[0, :, 1], (np.arange(texels.shape[1]) + 0.5) / texels.shape[1], atol=1e-4)
+        print(f"X-Toon maps of {toon.MAP_MAX} x 8, 20000 x 2, 4096 x 4096:", {k: np.round(v, 4) for k, v in colours.items()})
+        np.testing.assert_allclose(colours[20000], colours[toon.MAP_MAX], atol=0.002)
+        np.testing.assert_allclose(colours[4096], colours[toon.MAP_MAX], atol=0.002)
+
+    def test_a_missing_file_is_reported_as_missing(self):
+        def missing():
+            img = bpy.data.images.new("xtoon_missing", 4, 4)
+            img.source = 'FILE'
+            img.filepath = os.path.join(tempfile.gettempdir(), "edgelight_no_such_xtoon.png")
+            return img
+
+        mat, img = self.xtoon_scene(missing)
+        rec = helpers.render()
+        reports = " | ".join(str(r) for r in rec.get("reports", []))
+        self.assertIn(f"material '{mat.name}': X-Toon image '{img.name}': its file", reports)
+        self.assertIn("is not found; the built-in map is used", reports)
+        self.assertNotIn("0 x 0", reports)
 
 
 if __name__ == "__main__":
