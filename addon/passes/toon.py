@@ -90,9 +90,10 @@ def image_texels(image):
     if srgb and (w > MAP_MAX or h > MAP_MAX):
         # Averaged in linear light: the rows are linearised a band at a time, in place, so a large
         # image costs its own floats and little more.
+        lut = _srgb_to_linear(np.arange(256) / 255.0).astype(np.float32)  # a byte image's 256 values
         for y0 in range(0, h, 256):
             band = px[y0:y0 + 256, :, :min(c, 3)]
-            band[...] = _srgb_to_linear(band)
+            band[...] = lut[np.rint(band * 255.0).astype(np.uint8)]
         srgb = False
     px = box_reduce(box_reduce(px, 1, MAP_MAX), 0, MAP_MAX)
     if c < 4:
