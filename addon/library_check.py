@@ -2,17 +2,20 @@
 touching a page past the end of a truncated one kills the whole process with SIGBUS: a damaged
 library must be refused before ctypes.CDLL, while refusing is still possible.
 
-With a record beside the library (libedgelight.so -> libedgelight.json, written by
-scripts/make_package.py), the file's size and SHA-256 must equal the record's. Without one (a
-developer build named by EDGELIGHT_LIBRARY) the file must be ELF and long enough for every
-segment and section its headers declare, which catches truncation.
+The record beside the library (libedgelight.so -> libedgelight.json) is required: the file's
+size and SHA-256 must equal it. Without one a damaged file could only be judged by its format's
+headers, and a flipped byte inside passes any such check and crashes Blender when it runs.
+scripts/make_package.py writes the record into every package, and the build writes one beside
+each library it makes (`python3 addon/library_check.py LIBRARY`), so a developer build named by
+EDGELIGHT_LIBRARY is checked the same way. Nothing here reads a format's headers, so the check
+is the same for ELF, PE and Mach-O.
 
 Plain Python (no ctypes, no bpy): scripts/make_package.py imports it to write the record.
 """
 import hashlib
 import json
 import os
-import struct
+import sys
 
 
 class Corrupt(Exception):
@@ -44,12 +47,13 @@ def sha256(path):
 
 
 def check(library):
-    """Raises Corrupt unless the file at `library` passes; returns "record" or "elf", the check made."""
+    """Raises Corrupt unless the file at `library` matches its record; returns "record"."""
     size = os.path.getsize(library)
     record_file = record_path(library)
     if not os.path.exists(record_file):
-        check_elf(library, size)
-        return "elf"
+        raise Corrupt(f"{library} has no checksum record ({os.path.basename(record_file)} beside it), so it "
+                      "cannot be checked before it is loaded: reinstall the add-on (a developer build writes "
+                      "one: python3 addon/library_check.py LIBRARY)")
     try:
         with open(record_file, encoding="utf-8") as f:
             record = json.load(f)
@@ -65,36 +69,16 @@ def check(library):
     return "record"
 
 
-# ELF header fields after e_ident, and the program/section header fields read here
-# (offset and size in the file), for 32- and 64-bit files.
-_HEADER = {1: "HHIIIIIHHHHHH", 2: "HHIQQQIHHHHHH"}  # e_type .. e_shstrndx
-_PHDR = {1: ("IIIIIIII", 1, 4), 2: ("IIQQQQQQ", 2, 5)}  # format, index of p_offset, of p_filesz
-_SHDR = {1: ("IIIIIIIIII", 4, 5), 2: ("IIQQQQIIQQ", 4, 5)}  # format, index of sh_offset, of sh_size
-_SHT_NOBITS = 8  # .bss: occupies no bytes of the file
+def write_record(library, name=None):
+    """Writes `library`'s record beside it (`name`: the file name it records, by default its own)."""
+    record = make_record(library)
+    if name:
+        record["file"] = name
+    with open(record_path(library), "w", encoding="utf-8") as f:
+        json.dump(record, f, indent=1)
+        f.write("\n")
 
 
-def check_elf(library, size):
-    """Raises Corrupt unless `library` is an ELF file of at least the size its headers declare."""
-    with open(library, "rb") as f:
-        data = f.read()
-    if len(data) < 16 or data[:4] != b"\x7fELF" or data[4] not in (1, 2) or data[5] not in (1, 2):
-        raise Corrupt(f"{library} ({size} bytes) is not an ELF library: truncated or not a library")
-    bits, order = data[4], "<" if data[5] == 1 else ">"
-    header = struct.Struct(order + "16x" + _HEADER[bits])
-    if len(data) < header.size:
-        raise Corrupt(f"{library} is {size} bytes, shorter than its ELF header: the file is truncated")
-    fields = header.unpack_from(data)
-    phoff, shoff, phentsize, phnum, shentsize, shnum = fields[4], fields[5], *fields[8:12]
-    needed = max(phoff + phentsize * phnum, shoff + shentsize * shnum)
-    if needed <= len(data):
-        for offset, count, entsize, (fmt, i_off, i_size), skip in (
-                (phoff, phnum, phentsize, _PHDR[bits], None),
-                (shoff, shnum, shentsize, _SHDR[bits], _SHT_NOBITS)):
-            entry = struct.Struct(order + fmt)
-            for k in range(count if entsize >= entry.size else 0):
-                e = entry.unpack_from(data, offset + k * entsize)
-                if skip is None or e[1] != skip:
-                    needed = max(needed, e[i_off] + e[i_size])
-    if needed > size:
-        raise Corrupt(f"{library} is {size} bytes but its ELF headers declare {needed}: "
-                      "the file is truncated")
+if __name__ == "__main__":  # the build: python3 addon/library_check.py LIBRARY...
+    for path in sys.argv[1:]:
+        write_record(path)

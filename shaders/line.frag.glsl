@@ -89,12 +89,23 @@ void main()
    * (whole 4x4 blocks of a stroke usually agree, so llvmpipe skips it too). */
   bool own = el_own_face(id_c);
   if (!own) {
-    vec2 nid[9];
-    float ninv[9];
+    /* The 3x3 window, k = 3 * (dy + 1) + (dx + 1), filled at constant indices: softpipe's
+     * interpreter (tgsi_exec) stores through a variable array index at the index of the first
+     * pixel of its 2x2 quad for all four, even when that pixel was discarded or took the other
+     * branch (a stale index: a wrong element written), and a loop with a discard in the shader is
+     * not unrolled there. Reads through a variable index are per pixel. */
+    ivec2 lo = clamp(q - 1, ivec2(0), size), hi = clamp(q + 1, ivec2(0), size);
+    vec2 nid[9] = vec2[9](texelFetch(surface_id, ivec2(lo.x, lo.y), 0).rg, texelFetch(surface_id, ivec2(qc.x, lo.y), 0).rg,
+                          texelFetch(surface_id, ivec2(hi.x, lo.y), 0).rg, texelFetch(surface_id, ivec2(lo.x, qc.y), 0).rg,
+                          id_c, texelFetch(surface_id, ivec2(hi.x, qc.y), 0).rg,
+                          texelFetch(surface_id, ivec2(lo.x, hi.y), 0).rg, texelFetch(surface_id, ivec2(qc.x, hi.y), 0).rg,
+                          texelFetch(surface_id, ivec2(hi.x, hi.y), 0).rg);
+    float ninv[9] = float[9](texelFetch(surface_depth, ivec2(lo.x, lo.y), 0).r, texelFetch(surface_depth, ivec2(qc.x, lo.y), 0).r,
+                             texelFetch(surface_depth, ivec2(hi.x, lo.y), 0).r, texelFetch(surface_depth, ivec2(lo.x, qc.y), 0).r,
+                             inv_c, texelFetch(surface_depth, ivec2(hi.x, qc.y), 0).r,
+                             texelFetch(surface_depth, ivec2(lo.x, hi.y), 0).r, texelFetch(surface_depth, ivec2(qc.x, hi.y), 0).r,
+                             texelFetch(surface_depth, ivec2(hi.x, hi.y), 0).r);
     for (int k = 0; k < 9; k++) {
-      ivec2 at = clamp(q + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), size);
-      nid[k] = texelFetch(surface_id, at, 0).rg;
-      ninv[k] = texelFetch(surface_depth, at, 0).r;
       own = own || el_own_face(nid[k]);
     }
     /* The centre face's step of 1/z per pixel in x and y (1/z is affine in screen space across

@@ -352,7 +352,15 @@ vec4 el_outline_corners(int tri, vec4 clip, out vec4 zone0, out vec4 zone1, out 
         vec3 d = cross(n[(k + 2) % 3], n[k]);
         d = dot(d, n[(k + 1) % 3]) > 0.0 ? -d : d; /* away from the vertex, under the third face */
         vec2 img = -el_screen_dir(d, cv);
-        t[found] = length(img) > 0.0 ? normalize(img) : vec2(0.0);
+        /* Constant indices: softpipe's interpreter (tgsi_exec) stores through a variable array
+         * index at the first vertex's index for all four vertices it runs together. */
+        vec2 tk = length(img) > 0.0 ? normalize(img) : vec2(0.0);
+        if (found == 0) {
+          t[0] = tk;
+        }
+        else {
+          t[1] = tk;
+        }
         found++;
       }
     }

@@ -198,7 +198,8 @@ class DamagedLibraryFiles(unittest.TestCase):
         cases = {}  # name: path of a copy, beside the package's record unless *_bare
         for name, content, record in (("intact", data, True), ("half", data[:len(data) // 2], True),
                                       ("hundred", data[:100], True), ("flipped", bytes(flipped), True),
-                                      ("half_bare", data[:len(data) // 2], False), ("hundred_bare", data[:100], False)):
+                                      ("half_bare", data[:len(data) // 2], False), ("hundred_bare", data[:100], False),
+                                      ("flipped_bare", bytes(flipped), False)):
             os.mkdir(os.path.join(tmp, name))
             path = os.path.join(tmp, name, "libedgelight.so")
             with open(path, "wb") as f:
@@ -208,9 +209,11 @@ class DamagedLibraryFiles(unittest.TestCase):
             cases[name] = path
         results = dict(zip(cases, self.load_elsewhere(list(cases.values()))))
         self.assertEqual(results["intact"], "ok")
-        for name in ("half", "hundred", "half_bare", "hundred_bare"):
+        for name in ("half", "hundred"):
             self.assertRegex(results[name],
                              rf"^refused EL_LIBRARY_CORRUPT: {re.escape(cases[name])} is \d+ bytes but .*truncated")
+        for name in ("half_bare", "hundred_bare", "flipped_bare"):
+            self.assertIn(f"refused EL_LIBRARY_CORRUPT: {cases[name]} has no checksum record", results[name])
         self.assertIn(f"refused EL_LIBRARY_CORRUPT: {cases['flipped']} does not match the SHA-256 checksum",
                       results["flipped"])
 
