@@ -91,10 +91,10 @@ def region_projection(projection, full_w, full_h, region):
     return t @ projection
 
 
-def camera_world(cam):
-    """The camera's matrix without its scale, as Blender's own engines use it; refuses a
-    transform that has no orientation (scaled to zero, or NaN)."""
-    world = np.array(cam.matrix_world, dtype=np.float64)
+def camera_world(cam, matrix=None):
+    """The camera's matrix (or `matrix`, a view's of it) without its scale, as Blender's own
+    engines use it; refuses a transform that has no orientation (scaled to zero, or NaN)."""
+    world = np.array(cam.matrix_world if matrix is None else matrix, dtype=np.float64)
     axes = world[:3, :3]
     norms = np.linalg.norm(axes, axis=0)
     if not np.all(np.isfinite(world)) or norms.min() < 1e-12:
@@ -106,7 +106,26 @@ def camera_world(cam):
     return world
 
 
-def camera_for_render(depsgraph, full_w, full_h, region):
+def stereo_shift(projection, shift, full_w, full_h, r, cam):
+    """`projection` with its window moved by `shift` (in Blender's shift units: the sensor-fit
+    side of the frame) more: a stereo view's off-axis shift, beyond the camera's own that
+    calc_matrix_camera applied. Perspective: the window's centre column; orthographic: its offset."""
+    if shift == 0.0:
+        return projection
+    w, h = full_w * r.pixel_aspect_x, full_h * r.pixel_aspect_y
+    fit = {'HORIZONTAL': w, 'VERTICAL': h}.get(cam.data.sensor_fit, max(w, h))
+    dx = 2.0 * shift * fit / w
+    p = projection.copy()
+    if cam.data.type == 'ORTHO':
+        p[0, 3] -= dx
+    else:
+        p[0, 2] += dx
+    return p
+
+
+def camera_for_render(depsgraph, full_w, full_h, region, view=None):
+    """The camera of the frame's `region`; `view`: (world matrix, shift_x) of a multiview
+    render's view (RenderEngine.camera_model_matrix, camera_shift_x), else the camera's own."""
     scene = depsgraph.scene
     if scene.camera is None:
         raise RenderRefused("the scene has no camera")
@@ -117,13 +136,26 @@ def camera_for_render(depsgraph, full_w, full_h, region):
         raise RenderRefused(f"camera '{cam.name}' is panoramic; EdgeLight renders perspective and "
                             "orthographic cameras only")
     r = scene.render
-    world = camera_world(cam)
+    world = camera_world(cam, None if view is None else view[0])
     proj = np.array(cam.calc_matrix_camera(depsgraph, x=full_w, y=full_h, scale_x=r.pixel_aspect_x,
                                            scale_y=r.pixel_aspect_y), dtype=np.float64)
+    if view is not None:
+        proj = stereo_shift(proj, view[1] - cam.data.shift_x, full_w, full_h, r, cam)
     _, _, w, h = region
     return frame.Camera(view=np.linalg.inv(world), projection=region_projection(proj, full_w, full_h, region),
                         eye=tuple(world[:3, 3]), view_dir=tuple(-world[:3, 2]),
                         orthographic=cam.data.type == 'ORTHO', width=w, height=h)
+
+
+def render_views(r):
+    """The views a render draws: [None] (the camera's one) without multiview, else the names of
+    the views it uses (Stereo 3D: left and right), each its own camera and result."""
+    if not r.use_multiview:
+        return [None]
+    names = [v.name for v in r.views if v.use]
+    if r.views_format == 'STEREO_3D':
+        names = [n for n in names if n in ("left", "right")]
+    return names or [None]
 
 
 def check_size(w, h):
@@ -195,7 +227,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         else:
             last_render["rendering"] = record  # live while it renders: the UI test reads progress
         try:
-            self._render_layer(depsgraph, layer, record)
+            for view in render_views(depsgraph.scene.render):
+                self._render_layer(depsgraph, layer, record, view)
         except RenderRefused as e:
             self._report('ERROR', f"EdgeLight: {e}", record)
         except Exception as e:  # noqa: BLE001 - a silently empty frame would be saved as if it had worked
@@ -208,7 +241,17 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
                 last_render.clear()
                 last_render.update(record, layers=layers)
 
-    def _render_layer(self, depsgraph, layer, record):
+    def _view(self, depsgraph, view):
+        """(world matrix, shift_x) of multiview view `view` (None: the camera's own)."""
+        if view is None or depsgraph.scene.camera is None:
+            return None
+        self.active_view_set(view)
+        cam = depsgraph.scene.camera.evaluated_get(depsgraph)
+        return (self.camera_model_matrix(cam, use_spherical_stereo=False),
+                self.camera_shift_x(cam, use_spherical_stereo=False))
+
+    def _render_layer(self, depsgraph, layer, record, view=None):
+        """One view layer's frame, or of a multiview render one `view` of it (its name)."""
         scene = depsgraph.scene
         full_w, full_h = self.resolution_x, self.resolution_y  # the resolution percentage applied
         region = render_region(scene.render, full_w, full_h)
@@ -218,13 +261,19 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         drawn, at = drawn_region(region, full_w, full_h, region_margin(lines.settings_of(scene.edgelight)))
         if max(drawn[2], drawn[3]) > gpu.capabilities.max_texture_size_get():
             drawn, at = region, (0, 0)  # a region that just fits the GPU's textures: drawn without a margin
-        camera = camera_for_render(depsgraph, full_w, full_h, drawn)
+        eye = self._view(depsgraph, view)
+        record["view"] = view
+        camera = camera_for_render(depsgraph, full_w, full_h, drawn, eye)
         crop = Crop(at[0], at[1], region[2], region[3])
-        record["camera"] = camera_for_render(depsgraph, full_w, full_h, region)  # the pixels Blender gets
+        record["camera"] = camera_for_render(depsgraph, full_w, full_h, region, eye)  # the pixels Blender gets
         lib, error = load_library()
         if lib is None:
             raise RenderRefused(f"native library unavailable: {error}")
-        result = self.begin_result(0, 0, region[2], region[3], layer=layer)
+        result = self.begin_result(0, 0, region[2], region[3], layer=layer, view=view or "")
+        if view is not None and capture:
+            record.setdefault("views", {})[view] = record_view = {}
+        else:
+            record_view = None
         try:
             size = (result.resolution_x, result.resolution_y)
             if size != (region[2], region[3]):
@@ -243,6 +292,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
 
             pixels = self._render_pixels(depsgraph, camera, crop, lib, record, buffers, preview)
             compat.write_pass(combined, pixels.reshape(-1, 4))
+            if record_view is not None:
+                record_view.update(pixels=pixels, camera=record["camera"])
             written = {} if capture else None
             render_passes.write(result.layers[0], view_layer, buffers, written)
             if capture:
@@ -295,7 +346,14 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             keep[name] = crop(buffer)
         if vector is not None and not self.test_break():  # the lines as SVG beside the frame
             view = (crop.dx, camera.height - crop.dy - crop.h, crop.w, crop.h)
-            svg_output.write_render(depsgraph.scene, record["layer"], data, camera, line_settings, vector, record, view)
+            try:
+                # A still (F12, render(write_still=True)) is saved without a frame number, an
+                # animation's frames (-a, -f) with one: the SVG takes the name its image takes.
+                svg_output.write_render(depsgraph.scene, record["layer"], data, camera, line_settings, vector, record,
+                                        view, still=not self.is_animation, eye=record.get("view"))
+            except OSError as e:  # the SVG's own failure: the frame and its image still go out
+                self._report('WARNING', f"EdgeLight: the SVG of view layer '{record['layer']}' could not be written: "
+                                        f"{e.strerror or e} ({e.filename})", record)
         for line in data.reports[reported:]:  # what the passes skipped
             self._report('WARNING', f"EdgeLight: {line}", record)
         if stats.samples == 0 and not self.test_break():

@@ -28,15 +28,24 @@ def wanted(scene):
     return bool(_pending) or scene.edgelight_svg.enabled
 
 
-def frame_svg_path(scene, layer=None):
+def frame_svg_path(scene, layer=None, still=False, view=None):
     """The frame's output path with .svg for the image extension (and the view layer's name
-    when the scene renders several)."""
-    path = scene.render.frame_path(frame=scene.frame_current)
+    when the scene renders several). `still`: named as Blender names a still it writes
+    (render(write_still=True): the output path without a frame number), not an animation's frame.
+    `view`: a multiview render's view, whose file suffix (_L, _R) its images carry too."""
+    if still:
+        path = scene.render.filepath
+        if scene.render.use_file_extension:
+            path += scene.render.file_extension
+    else:
+        path = scene.render.frame_path(frame=scene.frame_current)
     root, ext = os.path.splitext(path)
     if ext.lower() in _IMAGE_EXTENSIONS:
         path = root
     if layer and sum(1 for v in scene.view_layers if v.use) > 1:
         path += "_" + bpy.path.clean_name(layer)
+    if view and view in scene.render.views:
+        path += scene.render.views[view].file_suffix
     return bpy.path.abspath(path) + ".svg"
 
 
@@ -51,13 +60,15 @@ def write(path, scene_data, camera, line_settings, vector, view=None):
     return os.path.getsize(path)
 
 
-def write_render(scene, layer, scene_data, camera, line_settings, vector, record, view=None):
+def write_render(scene, layer, scene_data, camera, line_settings, vector, record, view=None, still=False,
+                 eye=None):
     """The engine's hook after a frame: the frame's SVG (or the pending export's); `view`, the
-    part of the drawn frame Blender asked for (svg_write.document)."""
+    part of the drawn frame Blender asked for (svg_write.document); `still`, `eye` (the
+    multiview view): frame_svg_path's `still` and `view`."""
     if line_settings is None or "depth" not in vector:
         return
     start = time.perf_counter()
-    path = _pending.pop("path", None) or frame_svg_path(scene, layer)
+    path = _pending.pop("path", None) or frame_svg_path(scene, layer, still, eye)
     size = write(path, scene_data, camera, line_settings, vector, view)
     # The record outlives the render only for tests (engine.capture).
     record.update(svg=path, svg_bytes=size, svg_seconds=time.perf_counter() - start, vector=vector)

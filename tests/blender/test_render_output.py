@@ -267,6 +267,39 @@ class CameraTransforms(unittest.TestCase):
             self.assertGreater(iou, 0.98, f"scale {scale}")
             self.assertGreater(ours.sum(), 500)
 
+    def test_stereo_renders_each_eye_framed_like_workbench(self):
+        """Stereoscopy, individual files, off-axis convergence: each eye is its own camera and
+        its own file, framed as Workbench frames it (the right eye was a fully transparent PNG)."""
+        helpers.needs_gpu()
+        helpers.open_sample("cube")
+        scene = bpy.context.scene
+        r = scene.render
+        r.resolution_x, r.resolution_y, r.resolution_percentage = 200, 150, 100
+        r.use_multiview, r.views_format = True, 'STEREO_3D'
+        scene.render.image_settings.views_format = 'INDIVIDUAL'
+        stereo = scene.camera.data.stereo
+        stereo.convergence_mode, stereo.interocular_distance, stereo.convergence_distance = 'OFFAXIS', 0.6, 6.0
+        masks = {}
+        for engine in ("EDGELIGHT", "BLENDER_WORKBENCH"):
+            r.engine = engine
+            r.film_transparent = True
+            scene.render.image_settings.file_format = 'PNG'
+            scene.render.image_settings.color_mode = 'RGBA'
+            with tempfile.TemporaryDirectory() as tmp:
+                r.filepath = os.path.join(tmp, "frame")
+                helpers.addon().engine.capture = True
+                bpy.ops.render.render(write_still=True)
+                self.assertEqual(sorted(os.listdir(tmp)), ["frame_L.png", "frame_R.png"])
+                masks[engine] = [saved_alpha(os.path.join(tmp, f"frame_{eye}.png")) > 0.5 for eye in "LR"]
+        for eye, ours, theirs in zip("LR", masks["EDGELIGHT"], masks["BLENDER_WORKBENCH"]):
+            iou = (ours & theirs).sum() / max((ours | theirs).sum(), 1)
+            print(f"stereo {eye}: {ours.sum()} px, IoU against Workbench {iou:.4f}")
+            self.assertGreater(ours.sum(), 500, eye)
+            self.assertGreater(iou, 0.98, eye)
+        # The eyes differ: the cube is seen from two places.
+        left, right = masks["EDGELIGHT"]
+        self.assertGreater((left ^ right).sum(), 100)
+
     def test_camera_scaled_to_zero_is_refused_clearly(self):
         helpers.needs_gpu()
         helpers.open_sample("cube")

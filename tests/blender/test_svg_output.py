@@ -97,13 +97,37 @@ class Document(unittest.TestCase):
         print(f"svg toon: {os.path.getsize(path)} bytes, {sum(len(g) for g in layers)} polylines")
 
     def test_written_beside_the_frame(self):
+        """A still is saved without a frame number (render(write_still=True): shot_.png), and its
+        SVG takes the same name (it took shot_0007.svg)."""
         helpers.needs_gpu()
         scene = helpers.open_sample("cube")
         scene.edgelight.use_lines = True
+        scene.edgelight_svg.enabled = True
         scene.frame_current = 7
-        rec, path = render_svg(scene, "shot_")
-        self.assertEqual(os.path.basename(path), "shot_0007.svg")
-        self.assertTrue(os.path.exists(path))
+        out = tempfile.mkdtemp(prefix="edgelight_svg_")
+        scene.render.filepath = os.path.join(out, "shot_")
+        helpers.addon().engine.capture = True
+        bpy.ops.render.render(write_still=True)
+        self.assertEqual(sorted(os.listdir(out)), ["shot_.png", "shot_.svg"])
+
+    def test_an_svg_that_cannot_be_written_keeps_the_image(self):
+        """The SVG's path is a folder: the render goes on, its PNG is written, and a warning says
+        why the SVG is not (it was a raw IsADirectoryError, and no PNG)."""
+        helpers.needs_gpu()
+        scene = helpers.open_sample("cube")
+        scene.edgelight.use_lines = True
+        scene.edgelight_svg.enabled = True
+        out = tempfile.mkdtemp(prefix="edgelight_svg_")
+        scene.render.filepath = os.path.join(out, "shot_")
+        os.mkdir(os.path.join(out, "shot_.svg"))
+        engine = helpers.addon().engine
+        engine.capture = True
+        engine.last_render.clear()
+        bpy.ops.render.render(write_still=True)
+        self.assertTrue(os.path.isfile(os.path.join(out, "shot_.png")))
+        warnings = [m for level, m in engine.last_render.get("messages", []) if level == 'WARNING']
+        self.assertTrue(any("the SVG of view layer" in m and "could not be written" in m and "shot_.svg" in m
+                            for m in warnings), warnings)
 
     def test_export_operator_with_the_scene_camera(self):
         helpers.needs_gpu()
@@ -134,6 +158,11 @@ class Document(unittest.TestCase):
             self.assertEqual(run.returncode, 0, run.stdout[-2000:])
             self.assertEqual(sorted(f for f in os.listdir(tmp) if f.startswith("out_")),
                              ["out_0001.png", "out_0001.svg", "out_0002.png", "out_0002.svg"])
+            # One frame with -f is an animation's frame too: numbered like its image.
+            run = subprocess.run([bpy.app.binary_path, "-b", "--factory-startup", "--addons", helpers.MODULE,
+                                  blend, "-f", "5"], capture_output=True, text=True, timeout=300)
+            self.assertEqual(run.returncode, 0, run.stdout[-2000:])
+            self.assertTrue({"out_0005.png", "out_0005.svg"} <= set(os.listdir(tmp)), os.listdir(tmp))
 
 
 class InkMatchesLinePass(unittest.TestCase):
