@@ -2,9 +2,10 @@
 
 Each segment is projected as the line pass's vertex shader does (shaders/line.vert.glsl),
 sampled every SAMPLE_PX pixels, and each sample's visibility decided by the line pass's rule
-(line_visibility.py). Runs of equal visibility and width are chained through shared ends into
-polylines, collinear points are dropped, and each polyline is simplified (Douglas-Peucker) to
-TOLERANCE_PX (which also merges collinear runs: their inner points lie on the line).
+(line_visibility.py). Runs of equal visibility and width are chained into the fewest polylines
+(through shared ends, straight on through junctions, across gaps the round caps already ink),
+and each polyline is simplified (Douglas-Peucker) to TOLERANCE_PX (which also merges collinear
+runs: their inner points lie on the line).
 """
 from dataclasses import dataclass, field
 
@@ -118,47 +119,85 @@ def sample_runs(seg, matrix, instance_id, kind, style, camera, depth, ids, round
     return a, b, ~vis[first], width[first]
 
 
-def chain(a, b):
-    """Runs (a[i] -> b[i]) joined where exactly two meet at one point: a list of index paths
-    (arrays of points)."""
-    if len(a) == 0:
-        return []
-    pts = np.r_[a, b]
+def _weld(pts, join):
+    """Node of each point: points equal to 1/1024 px are one node, and with `join` > 0 so are
+    points closer than `join` (union-find over a grid of that size)."""
     key = np.round(pts * 1024.0).astype(np.int64)
     _, node = np.unique(key, axis=0, return_inverse=True)
     node = node.reshape(-1)
-    na, nb = node[:len(a)], node[len(a):]
-    degree = np.bincount(np.r_[na, nb], minlength=node.max() + 1)
+    if join <= 0.0 or len(pts) < 2:
+        return node
+    parent = list(range(node.max() + 1))
+
+    def root(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    cells = {}
+    for i, c in enumerate(map(tuple, np.floor(pts / join).astype(np.int64).tolist())):
+        cells.setdefault(c, []).append(i)
+    for (cx, cy), members in cells.items():
+        near = [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in cells.get((cx + dx, cy + dy), ())]
+        for i in members:
+            for j in near:
+                if j > i and np.hypot(*(pts[i] - pts[j])) < join:
+                    ri, rj = root(int(node[i])), root(int(node[j]))
+                    if ri != rj:
+                        parent[rj] = ri
+    return np.array([root(int(n)) for n in node])
+
+
+def chain(a, b, join=0.0):
+    """Runs (a[i] -> b[i]) joined into the fewest paths: a list of polylines (arrays of points).
+
+    Ends equal to 1/1024 px meet; so do ends closer than `join` (pixels), the gap bridged: two
+    round caps closer than a stroke's width overlap, so the line pass inks it as one stroke. A path goes on through
+    a node while an unused run leaves it, taking the straightest (a crossing is two paths, a T
+    one path and a branch), so a junction cuts no stroke in pieces."""
+    n = len(a)
+    if n == 0:
+        return []
+    pts = np.r_[a, b].astype(np.float64)
+    node = _weld(pts, join)
     adj = {}
-    for i, (u, v) in enumerate(zip(na.tolist(), nb.tolist())):
-        adj.setdefault(u, []).append(i)
-        adj.setdefault(v, []).append(i)
-    used = np.zeros(len(a), bool)
-    node_pt = np.zeros((len(degree), 2))
-    node_pt[node] = pts
-    out = []
+    for e, v in enumerate(node.tolist()):
+        adj.setdefault(v, []).append(e)  # end e: run e % n, its a (e < n) or b
+    used = np.zeros(n, bool)
 
-    def walk(i, at):
-        path = [at]
+    def direction(e_from, e_to):
+        d = pts[e_to] - pts[e_from]
+        length = float(np.hypot(d[0], d[1]))
+        return d / length if length > 0.0 else d
+
+    def walk(e):
+        """The path from end e through its run and on; returns its points."""
+        path = [pts[e]]
         while True:
-            used[i] = True
-            u, v = int(na[i]), int(nb[i])
-            at = v if at == u else u
-            path.append(at)
-            if degree[at] != 2:
-                return path
-            nxt = [j for j in adj[at] if not used[j]]
-            if not nxt:
-                return path
-            i = nxt[0]
+            r = e % n
+            other = e + n if e < n else e - n
+            used[r] = True
+            if np.hypot(*(pts[other] - path[-1])) > 0.0:
+                path.append(pts[other])
+            heading = direction(e, other)
+            candidates = [f for f in adj[node[other]] if not used[f % n]]
+            if not candidates:
+                return np.array(path)
+            e = max(candidates, key=lambda f: float(direction(f, f + n if f < n else f - n) @ heading))
+            if np.hypot(*(pts[e] - path[-1])) > 0.0:  # a bridged gap
+                path.append(pts[e])
 
-    for start in np.flatnonzero(degree != 2).tolist():   # open chains from their ends
-        for i in adj.get(start, ()):
-            if not used[i]:
-                out.append(node_pt[walk(i, start)])
-    for i in np.flatnonzero(~used).tolist():            # what is left is closed loops
-        if not used[i]:
-            out.append(node_pt[walk(i, int(na[i]))])
+    out = []
+    # Open paths from the nodes of odd degree (each is some path's end), then what is left:
+    # closed loops, from any end.
+    for v in [v for v, es in adj.items() if len(es) % 2 == 1]:
+        for e in adj[v]:
+            if not used[e % n]:
+                out.append(walk(e))
+    for e in range(n):
+        if not used[e]:
+            out.append(walk(e))
     return out
 
 
@@ -206,7 +245,8 @@ def strokes(instances, settings, camera, depth, ids, rounded=False):
         for h, w in sorted(set(zip(hidden[wanted].tolist(), width[wanted].tolist()))):
             sel = wanted & (hidden == h) & (width == w)
             st = Stroke(h, w)
-            for poly in chain(a[sel], b[sel]):
+            # Ends closer than the width: their round caps overlap, one stroke in the raster.
+            for poly in chain(a[sel], b[sel], join=w):
                 poly = np.c_[poly[:, 0], camera.height - poly[:, 1]]
                 st.polylines.append(simplify(poly))
             groups.append(st)

@@ -353,15 +353,26 @@ class Cleaning(unittest.TestCase):
         self.assertLessEqual(dist.max(), vl.TOLERANCE_PX + 1e-9)
         self.assertLess(len(kept), len(arc) // 4)
 
-    def test_chains_join_pairs_and_stop_at_junctions(self):
+    def test_chains_take_the_fewest_paths(self):
         vl = helpers.addon().vector_lines
         # A path of three runs (one given backwards), a closed triangle, and a T junction.
         a = np.array([[0, 0], [2, 0], [1, 0], [10, 0], [11, 0], [10, 1], [20, 0], [20, 5], [15, 0]], float)
         b = np.array([[1, 0], [3, 0], [2, 0], [11, 0], [10, 1], [10, 0], [20, 5], [20, 9], [20, 5]], float)
         polys = vl.chain(a, b)
         lengths = sorted(len(p) for p in polys)
-        self.assertEqual(lengths, [2, 2, 2, 4, 4])
+        # The T is one straight path through the junction and its branch (it was three pieces).
+        self.assertEqual(lengths, [2, 3, 4, 4])
         path = next(p for p in polys if len(p) == 4 and p[:, 1].max() == 0)
         self.assertEqual(sorted([tuple(path[0]), tuple(path[-1])]), [(0.0, 0.0), (3.0, 0.0)])
         loop = next(p for p in polys if len(p) == 4 and p[:, 1].max() == 1)
         self.assertEqual(tuple(loop[0]), tuple(loop[-1]))
+        stem = next(p for p in polys if len(p) == 3)
+        self.assertEqual(sorted([tuple(stem[0]), tuple(stem[-1])]), [(20.0, 0.0), (20.0, 9.0)])
+        # A crossing is two straight paths.
+        cross = vl.chain(np.array([[-1, 0], [0, -1], [0, 0], [0, 0]], float), np.array([[0, 0], [0, 0], [1, 0], [0, 1]], float))
+        self.assertEqual(sorted(sorted(map(tuple, p[[0, -1]].tolist())) for p in cross),
+                         [[(-1.0, 0.0), (1.0, 0.0)], [(0.0, -1.0), (0.0, 1.0)]])
+        # A gap shorter than `join` (the width: the caps overlap) is bridged, a longer one not.
+        a, b = np.array([[0, 0], [5.8, 0]], float), np.array([[5, 0], [9, 0]], float)
+        self.assertEqual(len(vl.chain(a, b, join=1.0)), 1)
+        self.assertEqual(len(vl.chain(a, b, join=0.5)), 2)
