@@ -323,7 +323,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
                                 f"{'s' if len(data.failed) != 1 else ''} failed ({names}; see the warnings)")
         s = frame.Settings(samples=settings.samples, highlights=settings.highlights,
                            transparent=depsgraph.scene.render.film_transparent, lines=line_settings,
-                           ids="ids" in buffers)
+                           ids="ids" in buffers,
+                           lines_in_combined=render_passes.lines_in_combined(depsgraph.view_layer))
         keep = {} if capture else None
         reported = len(data.reports)
 
@@ -342,6 +343,10 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         for name, buffer in buffers.items():
             if buffer is not None:
                 buffers[name] = crop(buffer)
+        if depsgraph.view_layer.use_pass_mist and buffers.get("depth") is not None:
+            world = depsgraph.scene.world
+            buffers["mist"] = render_passes.mist(buffers["depth"], record["camera"],
+                                                 world.mist_settings if world else render_passes.DEFAULT_MIST)
         for name, buffer in (keep or {}).items():
             keep[name] = crop(buffer)
         if vector is not None and not self.test_break():  # the lines as SVG beside the frame

@@ -4,6 +4,8 @@ use_pass_object_index), and EdgeLight's own
 Highlights, Lines and Surface, switched on per view layer (View Layer Properties -> EdgeLight
 Passes). How Combined is recomposed from them: docs/addon.md, "Render passes".
 """
+from types import SimpleNamespace
+
 import bpy
 import numpy as np
 
@@ -41,6 +43,11 @@ class EdgeLightViewLayerSettings(bpy.types.PropertyGroup):
         name="Lines", default=False, update=_requery,
         description="The ink lines alone, premultiplied RGBA (colour times opacity, opacity): "
                     "laid over the highlighted surface")
+    lines_as_pass: bpy.props.BoolProperty(
+        name="Lines as Render Pass", default=False, update=_requery,
+        description="Keep the ink out of Combined and write it to the Lines pass alone, as "
+                    "Freestyle's As Render Pass does: a glare or grade on Combined leaves the ink "
+                    "alone, and the compositor lays Lines over the result")
     use_pass_surface: bpy.props.BoolProperty(
         name="Surface", default=False, update=_requery,
         description="The shaded surface without highlights or lines, averaged over the samples, "
@@ -55,13 +62,21 @@ def enabled(view_layer):
         out.append(("Depth", 1, "Z", 'VALUE', "depth"))
     if view_layer.use_pass_normal:
         out.append(("Normal", 3, "XYZ", 'VECTOR', "normal"))
+    if view_layer.use_pass_mist:
+        out.append(("Mist", 1, "Z", 'VALUE', "mist"))
     if view_layer.use_pass_object_index:
         out.append((OBJECT_INDEX, 1, "X", 'VALUE', "ids"))
     settings = getattr(view_layer, "edgelight", None)
     for name, prop, buffer in OWN_PASSES:
-        if settings is not None and getattr(settings, prop):
+        if settings is not None and (getattr(settings, prop) or (buffer == "lines" and settings.lines_as_pass)):
             out.append((name, 4, "RGBA", 'COLOR', buffer))
     return out
+
+
+def lines_in_combined(view_layer):
+    """Whether Combined carries the ink (off: Lines as Render Pass)."""
+    settings = getattr(view_layer, "edgelight", None)
+    return not (settings is not None and settings.lines_as_pass)
 
 
 def register_passes(engine, scene, view_layer):
@@ -70,8 +85,42 @@ def register_passes(engine, scene, view_layer):
 
 
 def buffers_wanted(view_layer):
-    """{frame buffer: None} for frame.render to fill: only what an enabled pass needs."""
-    return {buffer: None for *_, buffer in enabled(view_layer) if buffer}
+    """{frame buffer: None} for frame.render to fill: only what an enabled pass needs (Mist is
+    made from the depth)."""
+    out = {buffer: None for *_, buffer in enabled(view_layer) if buffer and buffer != "mist"}
+    if view_layer.use_pass_mist:
+        out["depth"] = None
+    return out
+
+
+# A scene without a world: Blender's defaults of World.mist_settings.
+DEFAULT_MIST = SimpleNamespace(start=5.0, depth=25.0, falloff='QUADRATIC')
+# Blender's mist falloffs as the exponent Cycles raises the linear mist to.
+MIST_FALLOFF = {'QUADRATIC': 2.0, 'LINEAR': 1.0, 'INVERSE_QUADRATIC': 0.5}
+
+
+def mist(inv_depth, camera, mist_settings):
+    """The Mist pass ((h, w, 1) float32) from the first sample's 1 / view depth (0: nothing drawn),
+    as Cycles writes it: the distance from the eye along each pixel centre's ray, ((d - start) /
+    depth) clamped to [0, 1] and raised to the falloff's exponent; 1 where nothing was drawn."""
+    h, w = inv_depth.shape[:2]
+    inv = inv_depth[..., 0] if inv_depth.ndim == 3 else inv_depth
+    drawn = inv > 0.0
+    z = np.where(drawn, 1.0 / np.where(drawn, inv, 1.0), 0.0)
+    if camera.orthographic:
+        d = z
+    else:  # the ray through the pixel centre at view depth 1: its length scales the depth
+        p = np.asarray(camera.projection, np.float64)
+        x = (np.arange(w) + 0.5) / w * 2.0 - 1.0
+        y = (np.arange(h) + 0.5) / h * 2.0 - 1.0
+        # x_ndc = (p00 X + p02 Z) / -Z with Z = -1 at depth 1 (likewise y): X = (x_ndc + p02) / p00
+        rx = (x[None, :] + p[0, 2]) / p[0, 0]
+        ry = (y[:, None] + p[1, 2]) / p[1, 1]
+        d = z * np.sqrt(1.0 + rx * rx + ry * ry)
+    start, depth = float(mist_settings.start), max(float(mist_settings.depth), 1e-12)
+    m = np.clip((d - start) / depth, 0.0, 1.0) ** MIST_FALLOFF.get(mist_settings.falloff, 1.0)
+    m[~drawn] = 1.0
+    return m.astype(np.float32)[..., None]
 
 
 def object_index(ids, instances):
@@ -126,12 +175,14 @@ class VIEWLAYER_PT_edgelight_passes(EdgeLightPanel, bpy.types.Panel):
         col = layout.column(heading="Data")
         col.prop(view_layer, "use_pass_z")
         col.prop(view_layer, "use_pass_normal")
+        col.prop(view_layer, "use_pass_mist")
         col = layout.column(heading="Indexes")
         col.prop(view_layer, "use_pass_object_index")
         col = layout.column(heading="EdgeLight")
         settings = view_layer.edgelight
         for _, prop, _ in OWN_PASSES:
             col.prop(settings, prop)
+        col.prop(settings, "lines_as_pass")
 
 
 _classes = (EdgeLightViewLayerSettings, VIEWLAYER_PT_edgelight_passes)

@@ -11,7 +11,11 @@ void main()
   float world = surf.a < 0.0 ? 0.0 : background.w;
   surf = max(surf, vec4(0.0));
   vec4 hl = texelFetch(highlight_color, p, 0);
+#ifdef EL_NO_INK
+  vec4 ln = vec4(0.0); /* the ink is a render pass of its own (Lines as Render Pass) */
+#else
   vec4 ln = texelFetch(line_color, p, 0);
+#endif
   vec3 rgb = hl.rgb + (1.0 - hl.a) * surf.rgb;
   float a = hl.a + (1.0 - hl.a) * surf.a;
   rgb = ln.a * ln.rgb + (1.0 - ln.a) * rgb;

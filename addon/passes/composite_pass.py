@@ -4,10 +4,11 @@ from . import pass_state, shader_lib
 from .targets import composite_outputs
 
 
-def draw_composite(targets, background, full_screen, weight):
+def draw_composite(targets, background, full_screen, weight, lines=True):
     """Adds weight x the composited sample to the result (cleared by the caller), and the
-    surface alone to surface_sum when the Surface pass is asked for."""
-    shader = shader_lib.get("composite", composite_outputs(targets))
+    surface alone to surface_sum when the Surface pass is asked for; without `lines` the ink is
+    left out (it goes to the Lines pass alone)."""
+    shader = shader_lib.get("composite", {**composite_outputs(targets), **({} if lines else {"EL_NO_INK": 1})})
     with pass_state.drawing("composite", targets.result_fb):
         shader.bind()
         pass_state.bind_inputs(shader, "composite", targets)

@@ -24,6 +24,7 @@ class Settings:
     transparent: bool = False
     lines: object = None          # lines.LineSettings, or None: no lines
     ids: bool = False             # the first sample writes ids even without edges or lines (Object Index)
+    lines_in_combined: bool = True  # False: the ink goes to the Lines pass only (its own pass)
 
 
 @dataclass
@@ -79,7 +80,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
             if line_pass.draw_lines(targets, view_lines.line_instances(scene, gpu_meshes, view_batches) if settings.lines else [],
                                     settings.lines, ubo, stats, checkpoint, rounded=settings.highlights and not whiteout):
                 break
-        composite_pass.draw_composite(targets, background, full_screen, 1.0 / samples)
+        composite_pass.draw_composite(targets, background, full_screen, 1.0 / samples, settings.lines_in_combined)
         stats.samples += 1
         if progress:
             progress(s + 1, samples)

@@ -84,6 +84,28 @@ def composited(scene, color_mode, resolution=None):
     return rec, px.reshape(h, w, 4)
 
 
+class LinesAsRenderPass(unittest.TestCase):
+    def test_the_ink_goes_to_its_own_pass(self):
+        """Lines as Render Pass: Combined is the highlighted surface over the world, with no ink
+        (as the passes recompose it without Lines), and the Lines pass holds the ink as it does
+        with the option off."""
+        helpers.needs_gpu()
+        scene = lines_scene()
+        with_ink = helpers.render()
+        scene.view_layers[0].edgelight.lines_as_pass = True
+        scene.view_layers[0].edgelight.use_pass_lines = False  # the option alone asks for the pass
+        rec = helpers.render()
+        passes, world = rec["passes"], (0.2, 0.3, 0.4)
+        self.assertIn("Lines", passes)
+        np.testing.assert_allclose(passes["Lines"], with_ink["passes"]["Lines"], atol=1e-6)
+        self.assertGreater(float(passes["Lines"][..., 3].max()), 0.5, "ink in the Lines pass")
+        no_ink = dict(passes, Lines=np.zeros_like(passes["Lines"]))
+        np.testing.assert_allclose(rec["pixels"], recompose(no_ink, world, False), atol=1.0 / 255.0)
+        ink = passes["Lines"][..., 3] > 0.5
+        self.assertGreater(float(np.abs(with_ink["pixels"] - rec["pixels"])[ink].max()), 0.1,
+                           "with the option off Combined carries the ink")
+
+
 class Registered(unittest.TestCase):
     def test_render_layers_node_offers_the_enabled_passes(self):
         scene = lines_scene()
@@ -185,6 +207,71 @@ class DepthAndNormal(unittest.TestCase):
 
     def test_depth_orthographic(self):
         self.check(True)
+
+
+class Mist(unittest.TestCase):
+    """The Mist pass: each pixel centre's distance from the eye through the world's mist start,
+    depth and falloff, as Cycles writes it; 1 where nothing was drawn."""
+
+    def test_mist_is_the_distance_through_the_worlds_falloff(self):
+        helpers.needs_gpu()
+        for falloff in ('QUADRATIC', 'LINEAR', 'INVERSE_QUADRATIC'):
+            scene, cam = DepthAndNormal.plane_scene(self)
+            scene.view_layers[0].use_pass_mist = True
+            if scene.world is None:
+                scene.world = bpy.data.worlds.new("World")
+            ms = scene.world.mist_settings
+            ms.start, ms.depth, ms.falloff = 4.0, 3.0, falloff
+            rec = helpers.render()
+            got = rec["passes"]["Mist"][..., 0]
+            c = rec["camera"]
+            eye = np.array(cam.matrix_world)[:3, 3]
+            unproject = np.linalg.inv(c.projection @ c.view)
+            power = {'QUADRATIC': 2.0, 'LINEAR': 1.0, 'INVERSE_QUADRATIC': 0.5}[falloff]
+            for point in ((0.0, 0.0, 0.0), (1.5, 1.0, 0.0), (-1.0, -1.2, 0.0), (1.8, -1.4, 0.0)):
+                x, y = np.floor(helpers.project(rec, [point])[0]).astype(int)
+                ndc = np.array([(x + 0.5) / c.width, (y + 0.5) / c.height]) * 2.0 - 1.0
+                near, far = (unproject @ np.array([*ndc, z, 1.0]) for z in (-1.0, 1.0))
+                near, far = near[:3] / near[3], far[:3] / far[3]
+                hit = near + (far - near) * (near[2] / (near[2] - far[2]))
+                want = np.clip((np.linalg.norm(hit - eye) - 4.0) / 3.0, 0.0, 1.0) ** power
+                self.assertAlmostEqual(float(got[y, x]), float(want), delta=1e-4, msg=f"{falloff} {point}")
+            empty = rec["surface"][..., 3] == 0.0
+            self.assertTrue((got[empty] == 1.0).all())
+            self.assertGreater(float(got[~empty].max() - got[~empty].min()), 0.2, "the plane's mist varies")
+
+    def test_mist_matches_cycles(self):
+        """Cycles' own Mist pass of the same plane (16 samples: its pixel filter averages the
+        pixel's footprint), at the middle of the plane's image."""
+        helpers.needs_gpu()
+        scene, cam = DepthAndNormal.plane_scene(self)
+        scene.view_layers[0].use_pass_mist = True
+        if scene.world is None:
+            scene.world = bpy.data.worlds.new("World")
+        scene.world.mist_settings.start, scene.world.mist_settings.depth = 4.0, 3.0
+        ours = helpers.render()["passes"]["Mist"][..., 0]
+        scene.render.engine = 'CYCLES'
+        scene.cycles.samples, scene.cycles.device, scene.cycles.use_denoising = 16, 'CPU', False
+        tree, out = compositor(scene)
+        layers = tree.nodes.new("CompositorNodeRLayers")
+        tree.links.new(layers.outputs["Mist"], out)
+        scene.render.use_compositing = True
+        s = scene.render.image_settings
+        s.file_format, s.color_depth, s.color_mode = 'OPEN_EXR', '32', 'RGBA'
+        with tempfile.TemporaryDirectory() as tmp:
+            scene.render.filepath = os.path.join(tmp, "mist.exr")
+            bpy.ops.render.render(write_still=True)
+            img = bpy.data.images.load(scene.render.filepath)
+            w, h = img.size
+            px = np.empty(w * h * 4, np.float32)
+            img.pixels.foreach_get(px)
+            bpy.data.images.remove(img)
+        theirs = px.reshape(h, w, 4)[..., 0]
+        h, w = ours.shape
+        inner = (slice(h // 3, 2 * h // 3), slice(w // 3, 2 * w // 3))
+        diff = np.abs(ours[inner] - theirs[inner])
+        print(f"mist against Cycles: mean {diff.mean():.4f}, worst {diff.max():.4f}")
+        self.assertLess(float(diff.mean()), 0.01)
 
 
 class ObjectIndex(unittest.TestCase):
