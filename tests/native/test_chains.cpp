@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -51,7 +53,7 @@ TEST(Chains, OpenCylinderBordersAreTwoClosedCirclesOfKnownLength) {
     ASSERT_EQ(borders.size(), size_t(2 * segments));
     const Result r = chain(mesh.get(), borders);
     ASSERT_EQ(r.chains.size(), 2u);
-    const double polygon = 2.0 * segments * std::sin(M_PI / segments);  // perimeter of the inscribed polygon
+    const double polygon = 2.0 * segments * std::sin(std::numbers::pi / segments);  // perimeter of the inscribed polygon
     for (const el_chain& c : r.chains) {
         EXPECT_EQ(c.flags, EL_CHAIN_CLOSED);
         EXPECT_EQ(c.item_count, uint32_t(segments));
@@ -81,7 +83,7 @@ TEST(Chains, OpenPathHasTwoFreeEndsAndContinuousArcLength) {
     ASSERT_EQ(r.chains.size(), 1u);
     EXPECT_EQ(r.chains[0].flags, EL_CHAIN_START_FREE | EL_CHAIN_END_FREE);
     EXPECT_EQ(r.chains[0].item_count, 3u);
-    const double side = 2.0 * std::sin(M_PI / 8);
+    const double side = 2.0 * std::sin(std::numbers::pi / 8);
     EXPECT_NEAR(r.chains[0].length, 3 * side, 1e-5);
     // Each arc length value at a shared vertex is the same from both edges.
     std::vector<float> s;
@@ -134,7 +136,7 @@ TEST(Chains, SphereContoursFormOneClosedLoop) {
     EXPECT_NEAR(chains[0].length, total, 1e-4 * total);
     // The contour circle of a unit sphere seen from distance d has radius sqrt(1 - 1/d^2).
     const double d = std::sqrt(0.09 + 36.0 + 0.64), rc = std::sqrt(1.0 - 1.0 / (d * d));
-    EXPECT_NEAR(chains[0].length, 2 * M_PI * rc, 0.02 * 2 * M_PI * rc);
+    EXPECT_NEAR(chains[0].length, 2 * std::numbers::pi * rc, 0.02 * 2 * std::numbers::pi * rc);
 }
 
 TEST(Chains, BadInputIsRefusedWithAMessage) {

@@ -15,6 +15,8 @@
 #include <edgelight/edgelight.h>
 
 #include <gtest/gtest.h>
+
+#include <numbers>
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -104,12 +106,12 @@ private:
         double alpha;
         const int arc = int(uni(0, 10));
         if (arc < 5) {
-            alpha = uni(-M_PI, M_PI);
+            alpha = uni(-std::numbers::pi, std::numbers::pi);
         } else if (arc < 7) {
             alpha = coin(0.1) ? 0.0 : sign() * logu(1e-9, 1e-2);
         } else if (arc < 9) {
             const double d = coin(0.1) ? 0.0 : (coin(0.5) ? logu(1e-9, 3e-7) : logu(1e-5, 1e-1));
-            alpha = sign() * (M_PI - d);
+            alpha = sign() * (std::numbers::pi - d);
         } else {
             alpha = sign() * uni(1.4, 1.7);
         }
@@ -153,7 +155,7 @@ private:
         } else if (light < 8) {
             const dvec3 nn = coin(0.5) ? n1 : n2;
             const dvec3 t = glm::normalize(glm::cross(E, nn));
-            const double phi = coin(0.5) ? sign() * logu(1e-7, 1e-1) : sign() * (M_PI / 2 - logu(1e-7, 1e-1));
+            const double phi = coin(0.5) ? sign() * logu(1e-7, 1e-1) : sign() * (std::numbers::pi / 2 - logu(1e-7, 1e-1));
             dvec3 D = glm::normalize(nn * std::cos(phi) + t * std::sin(phi) + E * uni(-0.3, 0.3));
             if (coin(0.5)) {
                 L = D;

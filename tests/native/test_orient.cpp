@@ -1,6 +1,6 @@
 // Orientation: classification, normals, facing and silhouettes do not depend on the input winding.
 #include "mesh_fixtures.hpp"
-#include "mesh_io.hpp"
+#include "off_mesh.hpp"
 
 #include "classify.hpp"
 #include "face_normals.hpp"
@@ -346,7 +346,7 @@ TEST(Orient, RealMeshWithARandomHalfFlipped) {
     for (const char* name : {"fandisk", "armadillo"}) {
         const std::string path = std::string(EDGELIGHT_TEST_MESH_DIR) + "/" + name + ".off";
         el_tools::LoadedMesh l;
-        ASSERT_NO_THROW(l = el_tools::load_mesh(path)) << path << " (apt-get install libcgal-demo)";
+        ASSERT_NO_THROW(l = el_tools::read_off(path)) << path << " (apt-get install libcgal-demo)";
         TestMesh good;
         good.positions = l.positions;
         good.triangles = l.triangles;

@@ -1,6 +1,6 @@
 // Unique edges and edge -> face adjacency built from triangle lists.
 #include "mesh_fixtures.hpp"
-#include "mesh_io.hpp"
+#include "off_mesh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -196,7 +196,7 @@ TEST(Topology, AdjacencyMatchesAMapBasedReference) {
 }
 
 TEST(Topology, ScannedMeshWithShuffledVerticesMatchesTheReference) {
-    const el_tools::LoadedMesh cow = el_tools::load_mesh(std::string(EDGELIGHT_TEST_MESH_DIR) + "/cow.off");
+    const el_tools::LoadedMesh cow = el_tools::read_off(std::string(EDGELIGHT_TEST_MESH_DIR) + "/cow.off");
     TestMesh m;
     m.positions = cow.positions;
     m.triangles = cow.triangles;
