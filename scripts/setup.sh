@@ -20,6 +20,7 @@ packages=(
   clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the C API fuzz test (scripts/fuzz.sh)
   clang-format          # style.clang_format (.clang-format; ruff comes from PyPI below)
   g++-mingw-w64-x86-64-posix wine64 googletest  # the Windows DLL and its tests under wine (native.windows)
+  llvm-14               # llvm-objdump, llvm-nm, llvm-lipo: the macOS slices checked (native.macos)
 )
 
 missing=()
@@ -68,5 +69,21 @@ if [ ! -f "$lint/stamp" ] || [ "$(cat "$lint/stamp")" != "$want" ]; then
     echo "$want" > "$lint/stamp"
   else
     echo "setup: installing ruff failed (style.ruff will say so)" >&2
+  fi
+fi
+
+# zig (PyPI's ziglang), pinned: the macOS library's cross compiler and linker
+# (scripts/macos_slices.sh, ctest native.macos), in a venv under build/zig.
+zig="${BUILD_DIR:-$(cd "$(dirname "$0")/.." && pwd)/build}/zig"
+want="ziglang==0.17.1"
+if [ ! -f "$zig/stamp" ] || [ "$(cat "$zig/stamp")" != "$want" ]; then
+  echo "setup: installing $want into $zig"
+  rm -rf "$zig/venv"
+  mkdir -p "$zig"
+  if /usr/bin/python3.11 -m venv "$zig/venv" &&
+     "$zig/venv/bin/python" -m pip install --no-cache-dir --disable-pip-version-check -q "$want"; then
+    echo "$want" > "$zig/stamp"
+  else
+    echo "setup: installing ziglang failed (native.macos will say so)" >&2
   fi
 fi

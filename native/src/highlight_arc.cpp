@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 
 namespace el {
 
@@ -308,7 +309,7 @@ el_highlight_result highlight_eval(const HighlightTable& table, const el_highlig
     out.diffuse = arc_kernel(table, g, l2d, std::sqrt(ll), le * le / ll, 1.0f, &tr.diffuse);
 
     if (g.width > 0.0f) {
-        out.r_max = std::min(1.0f / g.width, FLT_MAX);
+        out.r_max = std::min(1.0f / g.width, std::numeric_limits<float>::max());
         out.visible_fraction = g.width / (g.width + hidden);
         if (in.K > 0.0f && in.radius > 0.0f) {
             const float w = in.K * (in.radius / dist) * g.width;

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -249,7 +250,7 @@ el_highlight_result highlight_reference(const el_highlight_input& in, ReferenceS
     if (vis > 0.0) {
         out.specular = to_unit(spec / vis);
         out.diffuse = to_unit(diff / vis);
-        out.r_max = float(std::min(1.0 / vis, double(FLT_MAX)));
+        out.r_max = float(std::min(1.0 / vis, double(std::numeric_limits<float>::max())));
         out.visible_fraction = to_unit(all > 0.0 ? vis / all : 0.0);
         const double ramp = std::clamp((s - kAxialRampS0) / kAxialRampS0, 0.0, 1.0);
         if (in.K > 0.0f && in.radius > 0.0f)
