@@ -8,7 +8,7 @@ import os
 
 import numpy as np
 
-from . import library_check
+from . import library_check, platforms
 
 ABI_VERSION = 4
 
@@ -166,8 +166,10 @@ _FUNCTIONS = {
 
 
 def default_library_path():
-    """EDGELIGHT_LIBRARY, else libedgelight.so beside this file (the packaged add-on's layout)."""
-    return os.environ.get("EDGELIGHT_LIBRARY") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "libedgelight.so")
+    """EDGELIGHT_LIBRARY, else the platform's library beside this file (the packaged add-on's
+    layout: libedgelight.so, edgelight.dll or libedgelight.dylib, platforms.py)."""
+    return os.environ.get("EDGELIGHT_LIBRARY") or os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                              platforms.library_file())
 
 
 class Library:
