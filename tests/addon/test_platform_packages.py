@@ -1,8 +1,9 @@
 """Every platform's package (scripts/package_addon.sh): its library is the platform's (format and
 architecture read from the file: ELF x86-64, PE x86-64 DLL, Mach-O arm64 / x86_64), under the
 name the loader picks there (addon/platforms.py), beside its checksum record; its manifest names
-that platform alone; and Blender's own `extension validate` accepts it (bpy 4.5). The libraries'
-exports and dependencies are checked where they are built (native.windows, native.macos).
+that platform alone; it exports exactly the el_ functions edgelight.h declares (read with the
+platform's binutils or LLVM's tools); and Blender's own `extension validate` accepts it (bpy
+4.5). Their dependencies are checked where they are built (native.windows, native.macos).
 
     PACKAGE_DIR=build/packages python3 tests/addon/test_platform_packages.py
 """
@@ -13,6 +14,7 @@ import re
 import struct
 import subprocess
 import sys
+import tempfile
 import unittest
 import zipfile
 
@@ -49,6 +51,21 @@ EXPECTED = {
 }
 
 
+def exported_el(platform, path):
+    """The el_ functions a library exports, read by a tool of its format."""
+    if platform == "windows-x64":
+        out = subprocess.run(["x86_64-w64-mingw32-objdump", "-p", path], capture_output=True, text=True, check=True).stdout
+        return sorted(set(re.findall(r"^\s+\[\s*\d+\]\s+(el_\w+)$", out, re.M)))
+    out = subprocess.run(["llvm-nm-14", "-gU", path], capture_output=True, text=True, check=True).stdout
+    names = [line.split()[-1] for line in out.splitlines() if line.strip()]
+    return sorted(n.lstrip("_") for n in names if n.lstrip("_").startswith("el_"))
+
+
+def declared_el():
+    with open(os.path.join(ROOT, "native", "include", "edgelight", "edgelight.h"), encoding="utf-8") as f:
+        return sorted(re.findall(r"^EL_API [^(]*?\b(el_\w+)\(", f.read(), re.M))
+
+
 class PlatformPackages(unittest.TestCase):
     def package(self, platform):
         found = [f for f in os.listdir(PACKAGES) if re.fullmatch(rf"edgelight-[0-9.]+-{platform}\.zip", f)]
@@ -65,6 +82,11 @@ class PlatformPackages(unittest.TestCase):
                 self.assertFalse(others & {os.path.basename(n) for n in z.namelist()}, "another platform's library")
                 record = json.loads(z.read("edgelight/" + os.path.splitext(name)[0] + ".json"))
                 self.assertEqual(record, {"file": name, "size": len(data), "sha256": hashlib.sha256(data).hexdigest()})
+                with tempfile.TemporaryDirectory() as tmp:
+                    path = os.path.join(tmp, name)
+                    with open(path, "wb") as f:
+                        f.write(data)
+                    self.assertEqual(exported_el(platform, path), declared_el())
                 manifest = z.read("edgelight/blender_manifest.toml").decode()
                 self.assertEqual(re.findall(r"^platforms\s*=\s*(.*)$", manifest, re.M), [f'["{platform}"]'])
 
