@@ -56,34 +56,24 @@ if [ ! -f "$farm/stamp" ] || [ "$(cat "$farm/stamp")" != "$want" ]; then
   fi
 fi
 
-# ruff for style.ruff (ruff.toml), pinned so that its rules do not move under the tests: in a
-# venv under build/lint, reused while the stamp matches. A failure leaves style.ruff failing.
-lint="${BUILD_DIR:-$(cd "$(dirname "$0")/.." && pwd)/build}/lint"
-want="ruff==0.17.6"
-if [ ! -f "$lint/stamp" ] || [ "$(cat "$lint/stamp")" != "$want" ]; then
-  echo "setup: installing $want into $lint"
-  rm -rf "$lint/venv"
-  mkdir -p "$lint"
-  if /usr/bin/python3.11 -m venv "$lint/venv" &&
-     "$lint/venv/bin/python" -m pip install --no-cache-dir --disable-pip-version-check -q "$want"; then
-    echo "$want" > "$lint/stamp"
-  else
-    echo "setup: installing ruff failed (style.ruff will say so)" >&2
+# A pinned PyPI tool in its own venv under build/NAME, reused while the stamp matches; a failure
+# leaves the tests that need it failing, each saying so.
+pip_tool() {
+  local dir="${BUILD_DIR:-$(cd "$(dirname "$0")/.." && pwd)/build}/$1" want="$2" why="$3"
+  if [ ! -f "$dir/stamp" ] || [ "$(cat "$dir/stamp")" != "$want" ]; then
+    echo "setup: installing $want into $dir"
+    rm -rf "$dir/venv"
+    mkdir -p "$dir"
+    if /usr/bin/python3.11 -m venv "$dir/venv" &&
+       "$dir/venv/bin/python" -m pip install --no-cache-dir --disable-pip-version-check -q "$want"; then
+      echo "$want" > "$dir/stamp"
+    else
+      echo "setup: installing $want failed ($why will say so)" >&2
+    fi
   fi
-fi
+}
 
-# zig (PyPI's ziglang), pinned: the macOS library's cross compiler and linker
-# (scripts/macos_slices.sh, ctest native.macos), in a venv under build/zig.
-zig="${BUILD_DIR:-$(cd "$(dirname "$0")/.." && pwd)/build}/zig"
-want="ziglang==0.17.1"
-if [ ! -f "$zig/stamp" ] || [ "$(cat "$zig/stamp")" != "$want" ]; then
-  echo "setup: installing $want into $zig"
-  rm -rf "$zig/venv"
-  mkdir -p "$zig"
-  if /usr/bin/python3.11 -m venv "$zig/venv" &&
-     "$zig/venv/bin/python" -m pip install --no-cache-dir --disable-pip-version-check -q "$want"; then
-    echo "$want" > "$zig/stamp"
-  else
-    echo "setup: installing ziglang failed (native.macos will say so)" >&2
-  fi
-fi
+# ruff for style.ruff (ruff.toml), pinned so that its rules do not move under the tests.
+pip_tool lint "ruff==0.17.6" style.ruff
+# zig (PyPI's ziglang): the macOS library's cross compiler and linker (scripts/macos_slices.sh).
+pip_tool zig "ziglang==0.17.1" native.macos

@@ -66,15 +66,15 @@ def compositor(scene):
     return tree, tree.nodes.new("CompositorNodeComposite").inputs[0]
 
 
-def composited(scene, color_mode, resolution=None):
-    """Renders once for the engine's record and once through the compositor into a 32-bit EXR:
-    (record, the EXR's pixels (h, w, 4))."""
+def composited(scene, color_mode, resolution=None, record=True):
+    """Renders once for the engine's record (unless not `record`) and once through the compositor
+    into a 32-bit EXR: (record or None, the EXR's pixels (h, w, 4))."""
     scene.render.use_compositing = True
     s = scene.render.image_settings
     s.file_format, s.color_depth, s.color_mode = 'OPEN_EXR', '32', color_mode
     with tempfile.TemporaryDirectory() as tmp:
         scene.render.filepath = os.path.join(tmp, "composited.exr")
-        rec = helpers.render(resolution=resolution)
+        rec = helpers.render(resolution=resolution) if record else None
         bpy.ops.render.render(write_still=True)
         img = bpy.data.images.load(scene.render.filepath)
         w, h = img.size
@@ -255,18 +255,7 @@ class Mist(unittest.TestCase):
         tree, out = compositor(scene)
         layers = tree.nodes.new("CompositorNodeRLayers")
         tree.links.new(layers.outputs["Mist"], out)
-        scene.render.use_compositing = True
-        s = scene.render.image_settings
-        s.file_format, s.color_depth, s.color_mode = 'OPEN_EXR', '32', 'RGBA'
-        with tempfile.TemporaryDirectory() as tmp:
-            scene.render.filepath = os.path.join(tmp, "mist.exr")
-            bpy.ops.render.render(write_still=True)
-            img = bpy.data.images.load(scene.render.filepath)
-            w, h = img.size
-            px = np.empty(w * h * 4, np.float32)
-            img.pixels.foreach_get(px)
-            bpy.data.images.remove(img)
-        theirs = px.reshape(h, w, 4)[..., 0]
+        theirs = composited(scene, 'RGBA', record=False)[1][..., 0]
         h, w = ours.shape
         inner = (slice(h // 3, 2 * h // 3), slice(w // 3, 2 * w // 3))
         diff = np.abs(ours[inner] - theirs[inner])
