@@ -155,7 +155,8 @@ class EdgeLightSceneSettings(bpy.types.PropertyGroup):
         update=_tag, name="Edge Highlights", default=True, description="Draw the rounded-edge highlight pass")
     show_debug_stats: bpy.props.BoolProperty(
         update=_tag, name="Developer Counters", default=False,
-        description="Show the viewport's cache hits, native calls and uploads in the status bar")
+        description="Show the viewport's counters in the status bar: objects, edges drawn and culled, "
+                    "line segments, cache hits, native calls and uploads")
     # Ink lines.
     use_lines: bpy.props.BoolProperty(update=_tag, name="Lines", default=False, description="Draw ink lines on feature edges")
     crease_angle: bpy.props.FloatProperty(

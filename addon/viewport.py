@@ -66,6 +66,7 @@ class ViewportState:
         self.lights = []
         self.ambient = (0.0, 0.0, 0.0)
         self.reports = []              # what the status bar says: the notes below, once each
+        self.status_text = ""          # what it last said (the viewport tests read it)
         self.notes = {}                # geometry key -> its extraction's notes (or why it was skipped)
         self.scene_notes = []          # of the last sync: objects not drawn, lights past the limit
         self.view_notes = []           # of the last view lines: instances the library refused
@@ -229,8 +230,11 @@ class ViewportState:
             self.image_valid = True
         self.counters.objects = len(self.instances)
         blit(engine, depsgraph.scene, self.targets.result)
+        # The engine's counters only with Debug's Developer Counters: an artist's status bar shows
+        # what concerns the scene (the last note), nothing else.
         summary = self.summary(debug=depsgraph.scene.edgelight.show_debug_stats)
-        engine.update_stats("EdgeLight", summary + (f" | {self.reports[-1]}" if self.reports else ""))
+        self.status_text = " | ".join(t for t in (summary, self.reports[-1] if self.reports else "") if t)
+        engine.update_stats("EdgeLight", self.status_text)
 
     def _update_view_lines(self, scene, camera, view_key, highlights):
         """Silhouettes and contours for this view: native view calls and new batches only when
@@ -296,12 +300,13 @@ class ViewportState:
         self.counters.edges_drawn, self.counters.edges_culled = drawn, culled
 
     def summary(self, debug=False):
-        """The status bar's line; the developer counters only with the Debug panel's option."""
+        """The engine's counters for the status bar: only with the Debug panel's Developer
+        Counters ("" otherwise)."""
+        if not debug:
+            return ""
         c = self.counters
-        text = f"{c.objects} objects | edges {c.edges_drawn} drawn, {c.edges_culled} culled | lines {c.lines_drawn}"
-        if debug:
-            text += f" | cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}"
-        return text
+        return (f"{c.objects} objects | edges {c.edges_drawn} drawn, {c.edges_culled} culled | lines {c.lines_drawn}"
+                f" | cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}")
 
 
 def scene_signature(state, scene):

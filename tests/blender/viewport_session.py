@@ -333,6 +333,16 @@ def steps():
     check("status bar: edge counts follow a radius change, the view unchanged",
           c17["edges_drawn"] < c16["edges_drawn"] and c17["view_changes"] == c16["view_changes"],
           f"edges drawn {c16['edges_drawn']} -> {c17['edges_drawn']}")
+    plain = state.status_text
+    bpy.context.scene.edgelight.show_debug_stats = True
+    yield 0.5
+    redraw()
+    yield 0.5
+    counted = state.status_text
+    bpy.context.scene.edgelight.show_debug_stats = False
+    check("status bar: the engine's counters only with Debug's Developer Counters",
+          "drawn" not in plain and "native calls" not in plain and "edges" in counted and "native calls" in counted,
+          f"{plain!r} / {counted!r}")
     extra = bpy.data.collections.new("Extra")
     bpy.context.scene.collection.children.link(extra)
     ball = zoo.box("Hidden", 0.5, (0.0, 2.5, 0.5), extra)
