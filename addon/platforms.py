@@ -1,7 +1,6 @@
 """The platforms EdgeLight ships for: each one's Blender extension platform name and the file
 name of its native library. One table: the loader (native.py) picks the library by sys.platform,
 scripts/make_package.py writes each platform's package. No bpy: plain Python imports it."""
-import platform
 import sys
 
 # Blender's extension platform -> the library's file name in the package (beside __init__.py).
@@ -22,11 +21,3 @@ def library_file(system=None):
         return LIBRARY_FILES["macos-arm64"]
     return LIBRARY_FILES["linux-x64"]
 
-
-def current():
-    """This machine's extension platform name (as Blender names it), or None if EdgeLight ships none."""
-    machine = platform.machine().lower()
-    arch = "arm64" if machine in ("arm64", "aarch64") else "x64" if machine in ("x86_64", "amd64") else None
-    system = "windows" if sys.platform.startswith("win") else "macos" if sys.platform == "darwin" else "linux"
-    name = f"{system}-{arch}"
-    return name if name in LIBRARY_FILES else None

@@ -202,3 +202,43 @@ def mark_edge(mesh, kind, index, value=True):
         return
     attr = mesh.attributes.get(attr_name) or mesh.attributes.new(attr_name, 'BOOLEAN', 'EDGE')
     attr.data[index].value = value
+
+
+def line_samples(rec, per_px=1, whole_segments=False):
+    """Centre-line samples of every drawn line type of a render with SVG output on (its record's
+    "vector"): per_px points a pixel along each segment (`whole_segments`: only segments wholly in
+    front of the eye), each taken to the pixel under it, as the line pass's fragment there sees
+    it. Yields (kind, style, pix (n, 2) int, p the pixel centres, q their closest points of the
+    segment, shown: whether line_visibility's rule draws the stroke there, a crease past a
+    rounded outline counted as not shown)."""
+    a = addon()
+    vl, vis = a.vector_lines, a.line_visibility
+    cam, vec = rec["camera"], rec["vector"]
+    h, w = rec["lines"].shape[:2]
+    settings = a.lines.settings_of(bpy.context.scene.edgelight)
+    styles = dict(settings.styles)
+    for matrix, segs, iid in vl.instances_of(rec["scene"], vec["view_segments"]):
+        for kind in settings.types:
+            seg = segs.get(kind)
+            if seg is None or len(seg) == 0:
+                continue
+            sa, sb, za, zb, t0, t1, keep = vl.project(seg, matrix, cam)
+            if whole_segments:
+                keep &= (t0 == 0.0) & (t1 == 1.0)
+            n = np.maximum(1, np.ceil(per_px * np.linalg.norm(sb - sa, axis=1))).astype(int)
+            s = np.repeat(np.flatnonzero(keep), n[keep])
+            k = np.arange(len(s)) - np.repeat(np.cumsum(n[keep]) - n[keep], n[keep])
+            c = sa[s] + ((k + 0.5) / n[s])[:, None] * (sb[s] - sa[s])
+            pix = np.floor(c).astype(int)
+            inside = np.all((pix >= 0) & (pix < [w, h]), axis=1)
+            s, pix = s[inside], pix[inside]
+            p = pix + 0.5  # the fragment's pixel centre and its closest point on the segment
+            ab = sb[s] - sa[s]
+            t = np.clip(((p - sa[s]) * ab).sum(1) / np.maximum((ab * ab).sum(1), 1e-12), 0.0, 1.0)
+            q = sa[s] + t[:, None] * ab
+            z = 1.0 / (1.0 / za[s] + t * (1.0 / zb[s] - 1.0 / za[s]))
+            outline = kind in vis.OUTLINE_TYPES
+            shown = vis.visible(q, z, seg.faces[s], iid, outline, vec["depth"], vec["ids"], cam.px_per_unit, True)
+            shown &= ~(vec["rounded"] & vis.past_outline(p, z, seg.faces[s], iid, outline, vec["depth"], vec["ids"],
+                                                          cam.px_per_unit, True))
+            yield kind, styles[kind], pix, p, q, shown

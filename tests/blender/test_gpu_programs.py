@@ -71,44 +71,16 @@ def under_inked(rec):
     visibility rule (line_visibility.py, at the pixel's closest point of the segment) shows the
     stroke, its alpha must reach the stroke's own box-filtered coverage of that pixel, taken
     CHORD_PX farther out (a chord's offset): strokes overlapping there only add ink."""
-    a = helpers.addon()
-    vl, vis = a.vector_lines, a.line_visibility
-    cam, vec = rec["camera"], rec["vector"]
     alpha = rec["lines"][..., 3]
-    h, w = alpha.shape
-    settings = a.lines.settings_of(bpy.context.scene.edgelight)
-    styles = dict(settings.styles)
     shown = bad = 0
-    for matrix, segs, iid in vl.instances_of(rec["scene"], vec["view_segments"]):
-        for kind in settings.types:
-            seg = segs.get(kind)
-            if seg is None or len(seg) == 0:
-                continue
-            style = styles[kind]
-            assert style.taper <= 0.0 and not style.scene_units, "the measure takes a fixed width in pixels"
-            sa, sb, za, zb, t0, t1, keep = vl.project(seg, matrix, cam)
-            n = np.maximum(1, np.ceil(2.0 * np.linalg.norm(sb - sa, axis=1))).astype(int)
-            s = np.repeat(np.flatnonzero(keep), n[keep])
-            k = np.arange(len(s)) - np.repeat(np.cumsum(n[keep]) - n[keep], n[keep])
-            c = sa[s] + ((k + 0.5) / n[s])[:, None] * (sb[s] - sa[s])
-            pix = np.floor(c).astype(int)
-            inside = np.all((pix >= 0) & (pix < [w, h]), axis=1)
-            s, pix = s[inside], pix[inside]
-            p = pix + 0.5
-            ab = sb[s] - sa[s]
-            t = np.clip(((p - sa[s]) * ab).sum(1) / np.maximum((ab * ab).sum(1), 1e-12), 0.0, 1.0)
-            q = sa[s] + t[:, None] * ab
-            z = 1.0 / (1.0 / za[s] + t * (1.0 / zb[s] - 1.0 / za[s]))
-            outline = kind in vis.OUTLINE_TYPES
-            v = vis.visible(q, z, seg.faces[s], iid, outline, vec["depth"], vec["ids"], cam.px_per_unit, True)
-            v &= ~(vec["rounded"] & vis.past_outline(p, z, seg.faces[s], iid, outline, vec["depth"], vec["ids"],
-                                                      cam.px_per_unit, True))
-            d = np.linalg.norm(p - q, axis=1) + CHORD_PX
-            r = 0.5 * style.width
-            cover = np.clip(np.minimum(d + r, 0.5) - np.maximum(d - r, -0.5), 0.0, 1.0) * style.opacity
-            ink = alpha[pix[:, 1], pix[:, 0]]
-            shown += int(v.sum())
-            bad += int((v & (ink < cover - 0.01)).sum())
+    for _, style, pix, p, q, visible in helpers.line_samples(rec, per_px=2):
+        assert style.taper <= 0.0 and not style.scene_units, "the measure takes a fixed width in pixels"
+        d = np.linalg.norm(p - q, axis=1) + CHORD_PX
+        r = 0.5 * style.width
+        cover = np.clip(np.minimum(d + r, 0.5) - np.maximum(d - r, -0.5), 0.0, 1.0) * style.opacity
+        ink = alpha[pix[:, 1], pix[:, 0]]
+        shown += int(visible.sum())
+        bad += int((visible & (ink < cover - 0.01)).sum())
     return shown, bad
 
 

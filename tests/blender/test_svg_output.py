@@ -238,41 +238,12 @@ class VisibilityMirrorsLinePass(unittest.TestCase):
 
     def agreement(self, rec):
         """(visible samples, of them inked, hidden samples away from visible ones, of them inked)."""
-        a = helpers.addon()
-        vl, vis = a.vector_lines, a.line_visibility
-        cam, vec = rec["camera"], rec["vector"]
         alpha = rec["lines"][..., 3]
         h, w = alpha.shape
-        settings = a.lines.settings_of(bpy.context.scene.edgelight)
         pixels, decided = [], []
-        for matrix, segs, iid in vl.instances_of(rec["scene"], vec["view_segments"]):
-            for kind in settings.types:
-                seg = segs.get(kind)
-                if seg is None or len(seg) == 0:
-                    continue
-                sa, sb, za, zb, t0, t1, keep = vl.project(seg, matrix, cam)
-                keep &= (t0 == 0.0) & (t1 == 1.0)
-                n = np.maximum(1, np.ceil(np.linalg.norm(sb - sa, axis=1))).astype(int)
-                s = np.repeat(np.flatnonzero(keep), n[keep])
-                k = np.arange(len(s)) - np.repeat(np.cumsum(n[keep]) - n[keep], n[keep])
-                c = sa[s] + ((k + 0.5) / n[s])[:, None] * (sb[s] - sa[s])
-                pix = np.floor(c)
-                inside = np.all((pix >= 0) & (pix < [w, h]), axis=1)
-                s, pix = s[inside], pix[inside].astype(int)
-                p = pix + 0.5  # the fragment's pixel centre and its closest point on the segment
-                ab = sb[s] - sa[s]
-                l2 = np.maximum((ab * ab).sum(1), 1e-12)
-                t = np.clip(((p - sa[s]) * ab).sum(1) / l2, 0.0, 1.0)
-                q = sa[s] + t[:, None] * ab
-                z = 1.0 / (1.0 / za[s] + t * (1.0 / zb[s] - 1.0 / za[s]))
-                pixels.append(pix)
-                outline = kind in vis.OUTLINE_TYPES
-                # A crease past a rounded outline is not drawn at all, judged at each pixel:
-                # counted with the hidden.
-                decided.append(vis.visible(q, z, seg.faces[s], iid, outline, vec["depth"], vec["ids"],
-                                           cam.px_per_unit, True)
-                               & ~(vec["rounded"] & vis.past_outline(p, z, seg.faces[s], iid, outline, vec["depth"],
-                                                                     vec["ids"], cam.px_per_unit, True)))
+        for _, _, pix, _, _, shown in helpers.line_samples(rec, whole_segments=True):
+            pixels.append(pix)
+            decided.append(shown)
         pix, v = np.concatenate(pixels), np.concatenate(decided)
         ink = alpha[pix[:, 1], pix[:, 0]] > 0.0
         # A hidden sample's pixel may carry another, visible stroke: only those 1 px or more
