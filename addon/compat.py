@@ -113,11 +113,11 @@ def eevee_engine_id():
 # version lacks is passed over.
 SHOWN_PANELS = (
     "EEVEE_MATERIAL_PT_context_material",  # the slot list, New and the material's ID template
-    "EEVEE_MATERIAL_PT_surface",  # the output's Surface: the Principled BSDF's inputs (base colour,
-                                  # roughness, metallic, specular, alpha), or without nodes the
-                                  # viewport colour, roughness and metallic EdgeLight reads then
     "EEVEE_WORLD_PT_surface",  # the world's Background node, or world.color without nodes
 )
+# EEVEE's material Surface panel (the Principled BSDF's inputs, or without nodes the viewport
+# colour, roughness and metallic EdgeLight reads) is drawn by ui.EDGELIGHT_PT_material_surface,
+# after EdgeLight's own material panel instead of above it.
 # Engine-neutral panels ('BLENDER_RENDER') left out, by name part: Freestyle's (EdgeLight draws
 # its own lines), motion blur (not supported), and the light's type-only panel and area size
 # (EdgeLight's own light panel shows the type with the settings it reads). EEVEE's light panel,

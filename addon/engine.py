@@ -218,6 +218,12 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
     def _report(self, level, message, record):
         record.setdefault("messages", []).append((level, message))
         self.report({level}, message)
+        if level == 'ERROR':
+            # Where the artist looks after F12: the render window's stats line (the result's
+            # error, as Cycles sets it) and, while the job ends, the engine's stats text. The
+            # report itself reaches the Info editor, the status bar and the render window's popup.
+            self.error_set(message)
+            self.update_stats("", message)
 
     def render(self, depsgraph):
         layer = depsgraph.view_layer.name

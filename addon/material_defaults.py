@@ -4,7 +4,9 @@ read from here. No bpy: plain-Python tests import it."""
 
 ROUNDED = True                                # use_rounding: the material rounds its chosen edges
 HIGHLIGHT_STRENGTH = 1.0                      # K
-RADIUS = 0.01                                 # object's local units, scaled with the object
+RADIUS = 0.05                                 # object's local units, scaled with the object: Cycles'
+                                              # Bevel node's default, the render this previews
+RADIUS_LAYOUT_4 = 0.01                        # the default up to settings layout 4 (versioning.py)
 TINT = (1.0, 1.0, 1.0)                        # multiplies the highlight's specular part
 EDGES = frozenset({'ANGLE', 'SHARP', 'BEVEL'})  # selection: which rules choose the rounded edges
 ANGLE_DEG = 30.0                              # angle: faces meeting at more than this are rounded

@@ -12,7 +12,8 @@ from . import material_defaults as defaults
 #   2: material `enabled` -> `use_rounding`
 #   3: material `ramp` (a list of stops) and `ramp_interpolation` -> `shade_ramp` (a colour ramp)
 #   4: material `K` (Highlight Strength) at most 1; a stored K > 1 becomes K = 1 and the radius times K
-SETTINGS_VERSION = 4
+#   5: material `radius` defaults to 5 cm instead of 1 cm; files of older layouts keep 1 cm
+SETTINGS_VERSION = 5
 
 # The largest Highlight Strength: 1 draws the coverage a real rounded edge of the radius has.
 # Above 1, W = clamp(K x covered length, 0, 1) saturates the band's partly covered pixels: on a

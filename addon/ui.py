@@ -39,10 +39,28 @@ class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
         sub = layout.column()
         sub.active = 'ANGLE' in s.selection
         sub.prop(s, "angle")
-        layout.prop(s, "use_custom_shininess")
-        sub = layout.column()
+        # Blender's toggle-and-value row (as Cycles' Clamp): "Custom Shininess" does not fit the
+        # checkbox's column at the default width.
+        row = layout.row(heading="Shininess")
+        row.prop(s, "use_custom_shininess", text="")
+        sub = row.row()
         sub.active = s.use_custom_shininess
-        sub.prop(s, "shininess")
+        sub.prop(s, "shininess", text="")
+
+
+class EDGELIGHT_PT_material_surface(EdgeLightPanel, bpy.types.Panel):
+    """EEVEE's Surface panel (the Principled BSDF's inputs EdgeLight reads), drawn by Blender's own
+    code but registered after EdgeLight's: Blender's panel comes first in the tab and fills three
+    screens, which put the rounding settings out of sight (compat.SHOWN_PANELS)."""
+    bl_label = "Surface"
+    bl_context = "material"
+
+    @classmethod
+    def poll(cls, context):
+        return super().poll(context) and context.material is not None
+
+    def draw(self, context):
+        bpy.types.EEVEE_MATERIAL_PT_surface.draw(self, context)
 
 
 def _length(value, scene):
@@ -161,13 +179,14 @@ class EDGELIGHT_PT_lines(EdgeLightPanel, bpy.types.Panel):
         layout = self.layout
         layout.use_property_split = True
         layout.active = s.use_lines
-        layout.prop(s, "crease_angle_faces")  # Freestyle's convention, the one artists know
-        layout.prop(s, "crease_angle", text="Normals Differ By")
+        # One crease angle, in Freestyle's and Line Art's convention: the tools ink is compared
+        # with (rounding's Angle follows the Bevel modifier's, as its own tool does).
+        layout.prop(s, "crease_angle_faces")
         layout.column(align=True).prop(s, "marks", expand=True)
         layout.prop(s, "hidden_lines")
         sub = layout.column()
         sub.active = s.hidden_lines == 'DIMMED'
-        sub.prop(s, "hidden_opacity")
+        sub.prop(s, "hidden_opacity", text="Opacity")  # under Hidden Lines: "Hidden" is said
 
 
 def _line_type_panel(name, label):
@@ -209,7 +228,8 @@ class EDGELIGHT_PT_debug(EdgeLightPanel, bpy.types.Panel):
 # EDGELIGHT_PT_lines_marked and EDGELIGHT_PT_lines_material.
 LINE_PANELS = tuple(_line_type_panel(name, label) for name, label, _on, _doc in LINE_TYPES)
 CLASSES = (EDGELIGHT_OT_ramp_new, EDGELIGHT_OT_ramp_single_user, EDGELIGHT_PT_material,
-           EDGELIGHT_PT_material_toon, ui_light.EDGELIGHT_PT_light, EDGELIGHT_PT_render, EDGELIGHT_PT_lines, *LINE_PANELS, EDGELIGHT_PT_debug)
+           EDGELIGHT_PT_material_toon, EDGELIGHT_PT_material_surface, ui_light.EDGELIGHT_PT_light, EDGELIGHT_PT_render,
+           EDGELIGHT_PT_lines, *LINE_PANELS, EDGELIGHT_PT_debug)
 _patched = []
 
 

@@ -12,6 +12,7 @@ import bpy
 from bpy.app.handlers import persistent
 
 from . import color_ramp, materials
+from .material_defaults import RADIUS_LAYOUT_4
 from .properties import K_MAX, SETTINGS_VERSION
 
 STAMP = "settings_version"
@@ -50,14 +51,22 @@ def _material_3_to_4(group):
     k = group.get("K")
     if k is None or float(k) <= K_MAX:
         return
-    radius = float(group.get("radius", group.bl_rna.properties["radius"].default))
+    radius = float(group.get("radius", RADIUS_LAYOUT_4))  # unstored: the default of its layout
     group.radius = radius * float(k)
     group.K = K_MAX
 
 
+def _material_4_to_5(group):
+    """Layout 5 raised the Radius default from 1 cm to 5 cm (material_defaults.RADIUS). Blender
+    stores no value that was left at its default, so a group of an older file without a stored
+    radius rendered at 1 cm: store that, and the file keeps its look."""
+    if "radius" not in group.keys():
+        group.radius = RADIUS_LAYOUT_4
+
+
 # kind -> {layout: step from that layout to the next}
 STEPS = {
-    "material": {1: _material_1_to_2, 2: _material_2_to_3, 3: _material_3_to_4},
+    "material": {1: _material_1_to_2, 2: _material_2_to_3, 3: _material_3_to_4, 4: _material_4_to_5},
     "scene": {},
 }
 
@@ -91,20 +100,56 @@ def _groups():
                 yield kind, id_block.edgelight
 
 
+def made_with_old_defaults():
+    """Whether a scene of this file was drawn by EdgeLight before layout 5, whose defaults differ.
+    Layout 5 stamps every scene on save; before, only groups that stored a value were stamped,
+    and layout 1 stamped nothing. So an unstamped scene that stores settings, or is set to
+    EdgeLight in a saved file, is older. A file never saved (a new one, the add-on enabled
+    again) is not."""
+    for scene in bpy.data.scenes:
+        if scene.library is not None:
+            continue
+        group = scene.edgelight
+        if STAMP in group.keys():
+            if int(group[STAMP]) < 5:
+                return True
+        elif group.keys() or (scene.render.engine == 'EDGELIGHT' and bpy.data.filepath):
+            return True
+    return False
+
+
+def _keep_unstored_defaults():
+    """A material that stores no EdgeLight value took every default. In a file made before
+    layout 5 that was the 1 cm radius: store it (the only default that has changed)."""
+    count = 0
+    for kind, group in _groups():
+        if kind == "material" and not group.keys():
+            _material_4_to_5(group)
+            group.settings_version = SETTINGS_VERSION
+            count += 1
+    return count
+
+
 def upgrade_all():
     """Upgrades every group; returns {old layout: count} of the groups that were older."""
+    old_defaults = made_with_old_defaults()
     upgraded = {}
     for kind, group in _groups():
         layout = upgrade(group, kind)
         if layout is not None and layout < SETTINGS_VERSION:
             upgraded[layout] = upgraded.get(layout, 0) + 1
+    if old_defaults:
+        count = _keep_unstored_defaults()
+        if count:
+            upgraded[4] = upgraded.get(4, 0) + count
     return upgraded
 
 
 def stamp_all():
-    """Records the current layout in every group that stores something, so the next load knows."""
-    for _kind, group in _groups():
-        if group.keys() and group.get(STAMP, 0) < SETTINGS_VERSION:
+    """Records the current layout in every group that stores something, and in every scene, so
+    the next load knows which defaults the file was made with."""
+    for kind, group in _groups():
+        if (group.keys() or kind == "scene") and group.get(STAMP, 0) < SETTINGS_VERSION:
             group.settings_version = SETTINGS_VERSION
 
 

@@ -180,7 +180,7 @@ class ShadingNormals(unittest.TestCase):
 class ChooseEdges(unittest.TestCase):
     def test_angle_rule_rounds_edges_past_the_angle(self):
         got = edge_choice.choose_edges(edges_of([10.0, 30.0, 31.0, 90.0]), [Shading()])
-        self.assertEqual(chosen(got), {0: ([2, 3], [np.float32(0.01)] * 2)})
+        self.assertEqual(chosen(got), {0: ([2, 3], [np.float32(material_defaults.RADIUS)] * 2)})
 
     def test_sharp_and_bevel_rules_and_the_bevel_weight_scaling_the_radius(self):
         d = edges_of([5.0, 5.0, 5.0, 60.0], sharp=[True, False, False, False], bevel=[0.0, 0.5, 0.0, 0.5])

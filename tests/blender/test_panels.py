@@ -8,7 +8,6 @@ import helpers
 # Shown for EdgeLight on every version of the matrix (the same names in 3.4 through 5.x).
 SHOWN = (
     "EEVEE_MATERIAL_PT_context_material",  # slots, New
-    "EEVEE_MATERIAL_PT_surface",  # the Principled BSDF's inputs
     "EEVEE_WORLD_PT_surface",  # world colour
     "WORLD_PT_context_world",
     "DATA_PT_context_light",
@@ -22,6 +21,7 @@ NOT_SHOWN = (
     "DATA_PT_EEVEE_light", "DATA_PT_EEVEE_light_distance", "DATA_PT_EEVEE_light_influence",
     "DATA_PT_EEVEE_light_shadow", "DATA_PT_EEVEE_shadow", "DATA_PT_EEVEE_shadow_contact",
     "DATA_PT_EEVEE_shadow_cascaded_shadow_map", "DATA_PT_light", "DATA_PT_area",
+    "EEVEE_MATERIAL_PT_surface",  # drawn by EdgeLight's own Surface panel, below its settings
     "EEVEE_MATERIAL_PT_volume", "EEVEE_WORLD_PT_volume", "EEVEE_MATERIAL_PT_settings",
     "EEVEE_NEXT_MATERIAL_PT_settings", "EEVEE_MATERIAL_PT_displacement", "EEVEE_MATERIAL_PT_thickness",
     "MATERIAL_PT_preview", "EEVEE_WORLD_PT_mist", "EEVEE_WORLD_PT_settings",
@@ -45,6 +45,14 @@ class Panels(unittest.TestCase):
         self.assertGreater(len(present), 5, "the names still exist in this version")
         for name in present:
             self.assertNotIn('EDGELIGHT', engines(name), name)
+
+    def test_material_settings_come_before_the_surface(self):
+        # Panels of one tab show in the order they were registered: EdgeLight's settings first,
+        # then the Principled inputs (Blender's own drawing), which fill several screens.
+        ui = helpers.addon().ui
+        order = [cls.__name__ for cls in ui.CLASSES if getattr(cls, "bl_context", "") == "material"]
+        self.assertLess(order.index("EDGELIGHT_PT_material"), order.index("EDGELIGHT_PT_material_surface"))
+        self.assertIn('EDGELIGHT', ui.EDGELIGHT_PT_material_surface.COMPAT_ENGINES)
 
     def test_edgelight_light_panel_replaces_eevee_s(self):
         panel = helpers.addon().ui_light.EDGELIGHT_PT_light

@@ -97,8 +97,8 @@ def panel_polls(names):
 
 # tab: (object made active, panels that must show, panels that must not)
 TABS = {
-    'MATERIAL': ("Cube", ("EEVEE_MATERIAL_PT_context_material", "EEVEE_MATERIAL_PT_surface", "EDGELIGHT_PT_material"),
-                 ("EEVEE_MATERIAL_PT_volume", "EEVEE_MATERIAL_PT_settings", "MATERIAL_PT_freestyle_line")),
+    'MATERIAL': ("Cube", ("EEVEE_MATERIAL_PT_context_material", "EDGELIGHT_PT_material_surface", "EDGELIGHT_PT_material"),
+                 ("EEVEE_MATERIAL_PT_surface", "EEVEE_MATERIAL_PT_volume", "EEVEE_MATERIAL_PT_settings", "MATERIAL_PT_freestyle_line")),
     'DATA': (None, ("DATA_PT_context_light", "EDGELIGHT_PT_light"),
              ("DATA_PT_EEVEE_light", "DATA_PT_EEVEE_shadow", "DATA_PT_light")),
     'WORLD': ("Cube", ("WORLD_PT_context_world", "EEVEE_WORLD_PT_surface"), ("EEVEE_WORLD_PT_volume",)),
@@ -125,6 +125,97 @@ def properties_tabs():
               f"{path}: {polls}")
     area.spaces.active.context = previous
     view_layer.objects.active = active
+
+
+def _split_texts(items, labels, checks, in_split=False):
+    """From UILayout.introspect(): the texts of property-split labels (a split's first column)
+    and of checkboxes in a split's value column (a boolean property drawn with its name); a
+    checkbox outside a split has the panel's whole width."""
+    for item in items:
+        if not isinstance(item, dict):
+            continue
+        split = item.get("type") == 'LAYOUT_SPLIT'
+        if split and item.get("items"):
+            labels += [b["draw_string"] for b in item["items"][0].get("items", [])
+                       if isinstance(b, dict) and b.get("draw_string") and "rna" not in b]
+        rna = item.get("rna", "")
+        if in_split and rna and item.get("draw_string"):
+            struct, prop = rna.split("[")[0].rsplit(".", 1)
+            owner = getattr(bpy.types, struct, None) or next(  # add-on groups are not in bpy.types
+                (c for c in bpy.types.PropertyGroup.__subclasses__() if c.__name__ == struct), None)
+            prop_rna = owner.bl_rna.properties.get(prop) if owner else None
+            if prop_rna is not None and prop_rna.type == 'BOOLEAN':
+                checks.append(item["draw_string"])
+        _split_texts(item.get("items", ()), labels, checks, in_split or split)
+
+
+def text_width(text):
+    import blf
+    style = bpy.context.preferences.ui_styles[0].widget_label
+    try:
+        blf.size(0, style.points * bpy.context.preferences.system.ui_scale)
+    except TypeError:  # 3.4 still takes a dpi
+        blf.size(0, style.points, 72)
+    return blf.dimensions(0, text)[0]
+
+
+def panel_labels():
+    """Every label EdgeLight's panels draw fits where Blender's own "Render Engine" label does:
+    the property split gives labels 40 % of the row and values 60 %, so a label may be as wide as
+    "Render Engine" and a checkbox's text 1.5 times that less the box. Read from what the panels
+    really laid out (UILayout.introspect) and measured in the UI's font."""
+    import edgelight
+    from edgelight.panel_base import EdgeLightPanel
+    window, area, _ = properties_editor()
+    panels = [cls for cls in edgelight.ui.CLASSES if getattr(cls, "bl_context", None) in ("render", "material", "data")]
+    texts, probes = {}, []
+    # A registered panel's draw cannot be swapped (Blender holds the function): each panel is
+    # drawn again by a probe panel of the same tab that calls its draw and reads the layout.
+    def probe_of(cls):
+        def draw(self, context):
+            cls.draw(self, context)
+            labels, checks = [], []
+            _split_texts(self.layout.introspect(), labels, checks)
+            texts[cls.__name__] = (labels, checks)
+
+        def poll(_probe, context):
+            return cls.poll(context)
+        name = "EDGELIGHT_PT_probe_" + cls.__name__[len("EDGELIGHT_PT_"):]
+        return type(name, (EdgeLightPanel, bpy.types.Panel), {
+            "bl_idname": name, "bl_label": cls.bl_label, "bl_context": cls.bl_context,
+            "draw": draw, "poll": classmethod(poll)})
+    for cls in panels:
+        probes.append(probe_of(cls))
+        bpy.utils.register_class(probes[-1])
+    view_layer = bpy.context.view_layer
+    light = next(ob for ob in bpy.context.scene.objects if ob.type == 'LIGHT')
+    active, previous = view_layer.objects.active, area.spaces.active.context
+    lines_on = bpy.context.scene.edgelight.use_lines
+    bpy.context.scene.edgelight.use_lines = True
+    try:
+        for tab, ob in (('RENDER', None), ('MATERIAL', bpy.data.objects["Cube"]), ('DATA', light)):
+            view_layer.objects.active = ob or active
+            yield 0.3
+            area.spaces.active.context = tab
+            area.tag_redraw()
+            yield 0.5
+    finally:
+        for probe in probes:
+            bpy.utils.unregister_class(probe)
+        bpy.context.scene.edgelight.use_lines = lines_on
+        view_layer.objects.active = active
+        area.spaces.active.context = previous
+    reference = text_width("Render Engine")
+    box = 30 * bpy.context.preferences.system.ui_scale  # the checkbox and its margins: 1.5 UI units
+    too_wide = [(name, t, round(text_width(t))) for name, (labels, checks) in texts.items()
+                for t, limit in [(t, reference) for t in labels] + [(t, 1.5 * reference - box) for t in checks]
+                if text_width(t) > limit]
+    boxes = sorted({(t, round(text_width(t))) for _labels, checks in texts.values() for t in checks})
+    check("panels: every EdgeLight label fits where Blender's 'Render Engine' does",
+          len(texts) >= 4 and not too_wide, f"drawn {sorted(texts)}; limits {reference:.0f} px, checkboxes "
+          f"{1.5 * reference - box:.0f} px; too wide {too_wide}; checkboxes {boxes}")
+    crease = [t for labels, _ in texts.values() for t in labels if "Crease" in t or "Normals" in t]
+    check("panels: the crease angle shown once", crease == ["Crease Angle"], f"{crease}")
 
 
 def steps():
@@ -383,6 +474,7 @@ def steps():
     # the panels whose settings EdgeLight honours (their poll passes in that editor) and not
     # EEVEE's that it ignores; each tab is drawn and captured.
     yield from properties_tabs()
+    yield from panel_labels()
 
     # 9. The toon ramp's colour-ramp widget: an edit (published on the message bus as the
     # widget does) reaches the viewport through the material.
@@ -454,6 +546,58 @@ def steps():
           f"{len(done)} progress reports over {span:.2f} s, {rec.get('previews', 0)} partial images")
     print(f"NOTE F12 from the UI: longest main-thread pause {np.max(np.diff(ticks)):.2f} s; Esc at 2 s: "
           f"{getattr(stats, 'samples', None)}/{getattr(stats, 'samples_requested', None)} samples drawn", flush=True)
+    yield from failed_render(window, area, region)
+
+
+def window_screenshot(win, name):
+    """A screenshot of window `win`, (h, w, 3) float from the top-left."""
+    path = os.path.join(OUT, name + ".png")
+    with bpy.context.temp_override(window=win, area=win.screen.areas[0]):
+        bpy.ops.screen.screenshot(filepath=path)
+    img = bpy.data.images.load(path)
+    w, h = img.size
+    px = np.array(img.pixels[:], dtype=np.float32).reshape(h, w, img.channels)[::-1, :, :3]
+    bpy.data.images.remove(img)
+    return px, path
+
+
+def failed_render(window, area, region):
+    """11. An F12 that fails (wider than the GPU's textures): the error shows where the artist is
+    looking, not only in the Info editor: the render window's stats line carries it, and the
+    status bar shows Blender's red report banner."""
+    import edgelight
+    scene = bpy.context.scene
+    edgelight.engine.last_render.clear()
+    saved = scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples
+    scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples = 30000, 64, 1
+    with bpy.context.temp_override(window=window, area=area, region=region):
+        bpy.ops.render.render('INVOKE_DEFAULT')
+    for _ in range(60):
+        yield 0.5
+        if edgelight.engine.last_render and not bpy.app.is_job_running('RENDER'):
+            break
+    yield 1.0
+    scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples = saved
+    errors = [m for level, m in edgelight.engine.last_render.get("messages", []) if level == 'ERROR']
+    windows = bpy.context.window_manager.windows
+    render_win = next((w for w in windows if any(a.type == 'IMAGE_EDITOR' for a in w.screen.areas) and w != window), None)
+    if render_win is None:
+        check("failed F12: a render window shows the result", False, f"{[w.screen.name for w in windows]}")
+        return
+    px, path = window_screenshot(render_win, "failed_render_window")
+    # The stats line: light text in the image editor's top rows, below its header.
+    band = px[24:56].max(axis=-1).max(axis=0) > 0.8
+    text_end = int(np.nonzero(band)[0].max()) if band.any() else 0
+    message = errors[0] if errors else ""
+    check("failed F12: the render window's stats line carries the error",
+          errors and text_end > text_width(message), f"{path}: text ends at {text_end} px, the error alone is "
+          f"{text_width(message):.0f} px; {errors}")
+    main, main_path = window_screenshot(window, "failed_render_status_bar")
+    status = main[-24:]
+    # The error report's banner: red, fading to a dark red after its flash (theme's Error).
+    red = (status[..., 0] - status[..., 1] > 0.07) & (status[..., 0] - status[..., 2] > 0.08)
+    check("failed F12: the status bar shows the red error banner", red.sum() > 200,
+          f"{main_path}: {int(red.sum())} red pixels in the status bar")
 
 
 def run():
