@@ -227,6 +227,65 @@ def simplify(p, tol=TOLERANCE_PX):
     return p[keep]
 
 
+SLIVER_PX = 3.0  # a piece this short beside an earlier type's stroke is that stroke's edge
+
+
+def _distance_to_segments(points, a, b):
+    """Per point (k, 2), the distance to the nearest of the segments a[i] -> b[i]."""
+    d = b - a
+    ll = np.maximum((d * d).sum(axis=1), 1e-12)
+    t = np.clip(((points[:, None, :] - a[None]) * d[None]).sum(axis=2) / ll[None], 0.0, 1.0)
+    q = a[None] + t[..., None] * d[None]
+    return np.sqrt(((points[:, None, :] - q) ** 2).sum(axis=2)).min(axis=1)
+
+
+def drop_slivers(out, order):
+    """Leaves out visible pieces at most SLIVER_PX long whose ink touches the visible ink of a type
+    drawn before theirs (`order`: the draw order) all along: where a crease runs on the rounded
+    outline, its visibility samples pass and fail by turns beside the silhouette drawn there, and
+    each pass was a polyline of its own (fandisk: 97 of 119 crease polylines, each about 1 px).
+    The earlier type wins that ink in the line pass; the file keeps its strokes whole."""
+    drawn_a, drawn_b, drawn_w = [], [], []
+    cell = 4.0 * SLIVER_PX
+    for kind in order:
+        groups = out.get(kind, ())
+        if drawn_a:
+            a, b, w = np.concatenate(drawn_a), np.concatenate(drawn_b), np.concatenate(drawn_w)
+            # The earlier strokes' segments by grid cell: a sliver looks only at its own cells.
+            lo_c = np.floor(np.minimum(a, b) / cell).astype(np.int64)
+            hi_c = np.floor(np.maximum(a, b) / cell).astype(np.int64)
+            grid = {}
+            for i in range(len(a)):
+                for cx in range(lo_c[i, 0], hi_c[i, 0] + 1):
+                    for cy in range(lo_c[i, 1], hi_c[i, 1] + 1):
+                        grid.setdefault((cx, cy), []).append(i)
+            for st in (g for g in groups if not g.hidden):
+                kept = []
+                for p in st.polylines:
+                    length = float(np.linalg.norm(np.diff(p, axis=0), axis=1).sum()) if len(p) > 1 else 0.0
+                    if length <= SLIVER_PX:
+                        c0 = np.floor((p.min(axis=0) - SLIVER_PX) / cell).astype(np.int64)
+                        c1 = np.floor((p.max(axis=0) + SLIVER_PX) / cell).astype(np.int64)
+                        near = sorted({i for cx in range(c0[0], c1[0] + 1) for cy in range(c0[1], c1[1] + 1)
+                                       for i in grid.get((cx, cy), ())})
+                        if near and np.all(_distance_to_segments(p, a[near], b[near])
+                                           <= 0.5 * (w[near].max() + st.width)):
+                            continue
+                    kept.append(p)
+                st.polylines = kept
+        for st in (g for g in groups if not g.hidden):
+            for p in st.polylines:
+                if len(p) > 1:
+                    drawn_a.append(p[:-1])
+                    drawn_b.append(p[1:])
+                    drawn_w.append(np.full(len(p) - 1, st.width))
+    for kind in list(out):
+        out[kind] = [g for g in out[kind] if g.polylines]
+        if not out[kind]:
+            del out[kind]
+    return out
+
+
 def strokes(instances, settings, camera, depth, ids, rounded=False):
     """type -> [Stroke] for the drawn types of `settings` (LineSettings).
 
@@ -252,7 +311,7 @@ def strokes(instances, settings, camera, depth, ids, rounded=False):
             groups.append(st)
         if groups:
             out[kind] = groups
-    return out
+    return drop_slivers(out, [kind for kind, _ in settings.styles])
 
 
 def instances_of(scene, view_segments):

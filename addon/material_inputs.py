@@ -1,0 +1,135 @@
+"""What of a material's node tree EdgeLight reads, and what it cannot: the Principled BSDF's
+socket values (materials.py), never what is linked into them, and none of its lobes past the
+base, metallic and specular ones. What a material sets that EdgeLight does not draw is said once
+per material (a report line) and in its panel, instead of rendering as if it were not there.
+"""
+from . import compat
+
+# Principled BSDF inputs EdgeLight reads as values (materials.shading_of); a link into one is
+# not followed: its socket's own value is drawn. Names of 3.4 and of 4.0+ (renamed sockets).
+READ = ("Base Color", "Metallic", "Roughness", "Specular", "Specular IOR Level", "Alpha")
+# Inputs that change the look when linked, though EdgeLight uses the mesh's normals and no emission.
+LINKED_IGNORED = ("Normal", "Emission", "Emission Color", "Emission Strength")
+# Lobes EdgeLight does not draw: (label, weight sockets by version). On when a weight is above 0.
+LOBES = (("Subsurface", ("Subsurface", "Subsurface Weight")),
+         ("Transmission", ("Transmission", "Transmission Weight")),
+         ("Sheen", ("Sheen", "Sheen Weight")),
+         ("Coat", ("Clearcoat", "Coat Weight")),
+         ("Thin Film", ("Thin Film Thickness",)))
+
+
+def _from_node(socket):
+    """The node feeding a linked socket, through reroutes; None when unlinked."""
+    while socket is not None and socket.is_linked:
+        node = socket.links[0].from_node
+        if node.type != 'REROUTE':
+            return node
+        socket = node.inputs[0]
+    return None
+
+
+def _describe(node):
+    label = node.label or node.name
+    kind = node.bl_label
+    return kind if label == kind else f"{kind} '{label}'"
+
+
+def _value(socket):
+    v = getattr(socket, "default_value", None)
+    if v is None:
+        return "none"
+    try:
+        return "(" + ", ".join(f"{float(c):.3g}" for c in v[:3]) + ")"
+    except TypeError:
+        return f"{float(v):.3g}"
+
+
+def output_node(tree):
+    """The material output Blender renders with: the active one, else the first."""
+    outputs = [n for n in tree.nodes if n.type == 'OUTPUT_MATERIAL']
+    return next((n for n in outputs if n.is_active_output), outputs[0] if outputs else None)
+
+
+def principled_of(material):
+    """(the Principled BSDF EdgeLight reads or None, [what it cannot draw of the material's
+    outputs]): the one on the output's Surface; past another shader, the first in the tree as
+    before (its values are the material's best guess), said in the list."""
+    if not compat.uses_nodes(material):
+        return None, []
+    tree = material.node_tree
+    out = output_node(tree)
+    unread = []
+    surface = _from_node(out.inputs["Surface"]) if out is not None else None
+    if out is not None:
+        for name in ("Volume", "Displacement"):
+            node = _from_node(out.inputs.get(name)) if out.inputs.get(name) is not None else None
+            if node is not None:
+                unread.append((f"{name.lower()} ({_describe(node)})", f"the {name} output: {_describe(node)}"))
+    if surface is not None and surface.type == 'BSDF_PRINCIPLED':
+        return surface, unread
+    first = next((n for n in tree.nodes if n.type == 'BSDF_PRINCIPLED'), None)
+    if surface is not None:
+        used = f"the Principled BSDF '{first.name}' in it is drawn" if first else "the viewport display colour is drawn"
+        unread.append((_describe(surface), f"its Surface is a {_describe(surface)} ({used})"))
+    return first, unread
+
+
+def unread_inputs(node):
+    """[(short, long)] of what the Principled BSDF `node` sets that EdgeLight does not draw."""
+    out = []
+    for name in READ + LINKED_IGNORED:
+        socket = node.inputs.get(name)
+        source = _from_node(socket) if socket is not None else None
+        if source is None:
+            continue
+        if name in READ:
+            out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)} (its value {_value(socket)} is drawn)"))
+        else:
+            out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)}"))
+    strength = node.inputs.get("Emission Strength")
+    color = node.inputs.get("Emission Color") or node.inputs.get("Emission")
+    if strength is not None and color is not None and not strength.is_linked and not color.is_linked:
+        if float(strength.default_value) > 0.0 and max(float(c) for c in color.default_value[:3]) > 0.0:
+            out.append(("Emission", f"Emission (colour {_value(color)}, strength {float(strength.default_value):.3g})"))
+    for label, names in LOBES:
+        for name in names:
+            socket = node.inputs.get(name)
+            if socket is not None and not socket.is_linked and float(socket.default_value) > 0.0:
+                out.append((label, f"{label} ({name} {float(socket.default_value):.3g})"))
+                break
+    return out
+
+
+def note(material, unread):
+    """The report line for a material's unread settings; "" when it has none."""
+    if not unread:
+        return ""
+    return f"material '{material.name}': EdgeLight does not draw " + "; ".join(long for _short, long in unread)
+
+
+def panel_line(unread):
+    """The material panel's one line."""
+    return "Not drawn: " + ", ".join(short for short, _long in unread) if unread else ""
+
+
+def world_note(world):
+    """The report line for a world whose light EdgeLight does not read; "" when it reads it all."""
+    if world is None or not compat.uses_nodes(world):
+        return ""
+    out = [n for n in world.node_tree.nodes if n.type == 'OUTPUT_WORLD']
+    output = next((n for n in out if n.is_active_output), out[0] if out else None)
+    surface = _from_node(output.inputs["Surface"]) if output is not None else None
+    if surface is None:
+        return ""
+    if surface.type != 'BACKGROUND':
+        return (f"world '{world.name}': its Surface is a {_describe(surface)}, which EdgeLight does not read; "
+                "the first Background's colour lights the scene")
+    said = []
+    for name in ("Color", "Strength"):
+        source = _from_node(surface.inputs[name])
+        if source is not None:
+            said.append(f"its {name} comes from {_describe(source)}")
+    if not said:
+        return ""
+    return (f"world '{world.name}': " + " and ".join(said) + ", which EdgeLight does not read; the socket values "
+            f"(colour {_value(surface.inputs['Color'])}, strength {float(surface.inputs['Strength'].default_value):.3g}) light the scene")
