@@ -321,7 +321,7 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings, cache=render_cache.EXTRACTS)
         if len(data.lights) > frame.MAX_LIGHTS:
             data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
-        for line in data.reports:
+        for line in dict.fromkeys(data.reports):  # once each: geometries share materials
             self._report('WARNING', f"EdgeLight: {line}", record)
         if data.failed and not data.instances:  # the frame would be empty, as if nothing were there
             names = ", ".join(f"'{n}'" for n in data.failed[:6]) + (" and more" if len(data.failed) > 6 else "")

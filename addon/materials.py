@@ -5,7 +5,7 @@ from dataclasses import dataclass, replace
 
 import bpy
 
-from . import color_ramp, compat
+from . import color_ramp, material_inputs
 from . import material_defaults as defaults
 from .passes import shader_specs
 from .properties import K_MAX
@@ -85,12 +85,13 @@ def _float(node, default, *names):
 
 
 def _principled(material):
-    if not compat.uses_nodes(material):
-        return None
-    for node in material.node_tree.nodes:
-        if node.type == 'BSDF_PRINCIPLED':
-            return node
-    return None
+    return material_inputs.principled_of(material)[0]
+
+
+def unread(material):
+    """[(short, long)] of what `material` sets that EdgeLight does not draw (material_inputs)."""
+    node, said = material_inputs.principled_of(material)
+    return said + (material_inputs.unread_inputs(node) if node is not None else [])
 
 
 def base_color_of(material):
@@ -128,6 +129,7 @@ def shading_of(material):
     s = material.edgelight
     n = s.shininess if s.use_custom_shininess else shininess_from_roughness(roughness)
     toon, note = usable_toon(material.name, toon_of(s, base))
+    note = "; ".join(n for n in (material_inputs.note(material, unread(material)), note) if n)
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import bpy
 import numpy as np
 
-from . import closed_surfaces, compat, native, radius_clamp, render_cache
+from . import closed_surfaces, compat, material_inputs, native, radius_clamp, render_cache
 from .edge_choice import choice_key, choose_edges, same_edges
 from .edge_data import EdgeData, first_two_faces
 from .lines import static_lines
@@ -499,4 +499,7 @@ def collect(depsgraph, lib=None, line_settings=None, cache=None):
     note = not_drawn_note(not_drawn)
     if note:
         reports.append(note)
+    world = material_inputs.world_note(depsgraph.scene.world)
+    if world:
+        reports.append(world)
     return SceneData(instances, lights, world_ambient(depsgraph.scene), reports, failed)

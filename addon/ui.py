@@ -2,8 +2,9 @@
 EdgeLight are shown for it too."""
 import bpy
 
-from . import color_ramp, compat, ui_light
+from . import color_ramp, compat, material_inputs, ui_light
 from .materials import radius_clamps
+from .materials import unread as unread_of
 from .panel_base import EdgeLightPanel
 from .properties import LINE_TYPES
 
@@ -25,6 +26,9 @@ class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
         layout.use_property_split = True
         layout.active = s.use_rounding
         layout.prop(s, "radius")
+        unread = material_inputs.panel_line(unread_of(context.material))
+        if unread:  # what this material sets that EdgeLight does not draw (the render says it all)
+            layout.label(text=unread, icon='ERROR')
         note = radius_clamp_note(context.material, context.scene)
         if note:
             col = layout.column(align=True)

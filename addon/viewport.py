@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import bpy
 import numpy as np
 
-from . import edge_choice, lines, scene_sync
+from . import edge_choice, lines, material_inputs, scene_sync
 from .materials import shading_of
 from .passes import batches, frame, frame_data, line_pass, toon, view_lines
 from .passes.camera import Camera
@@ -132,6 +132,9 @@ class ViewportState:
         self.scene_notes = [note] if note else []
         if len(lights) > frame_data.MAX_LIGHTS:
             self.scene_notes.append(f"{len(lights)} lights; the {frame_data.MAX_LIGHTS} first are used")
+        world = material_inputs.world_note(depsgraph.scene.world)
+        if world:
+            self.scene_notes.append(world)
         self._gather_reports()
         self.instances, self.lights = instances, lights
         self.ambient = scene_sync.world_ambient(depsgraph.scene)
