@@ -97,8 +97,10 @@ def write_pass(render_pass, pixels):
 
 
 
-# Blender's Object Index render pass: 5.0 renamed it from "IndexOB" (Cycles registers the same).
+# Blender's Object and Material Index render passes: 5.0 renamed them from "IndexOB" and "IndexMA"
+# (Cycles registers the same).
 OBJECT_INDEX_PASS = "Object Index" if bpy.app.version >= (5, 0) else "IndexOB"
+MATERIAL_INDEX_PASS = "Material Index" if bpy.app.version >= (5, 0) else "IndexMA"
 
 
 def eevee_engine_id():

@@ -343,8 +343,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         vector = {} if line_settings is not None and svg_output.wanted(depsgraph.scene) else None
         pixels, stats = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=keep,
                                      passes=buffers, preview=preview, vector=vector)
-        if buffers.get("ids") is not None:  # which instance covers each pixel -> its object's pass_index
-            buffers["ids"] = render_passes.object_index(buffers["ids"], data.instances)
+        # Which instance and face cover each pixel -> its object's and its material's pass_index.
+        render_passes.from_ids(buffers, depsgraph.view_layer, data.instances)
         pixels = crop(pixels)
         for name, buffer in buffers.items():
             if buffer is not None:

@@ -49,6 +49,7 @@ class Shading:
     # A setting this material could not use, and what was used instead (a report line).
     note: str = ""
     material: str = ""     # the material's name_full ("" without one): keys the radius clamp notes
+    pass_index: int = 0    # the material's Pass Index (the Material Index render pass)
 
 
 def default_ramp(base):
@@ -133,7 +134,8 @@ def shading_of(material):
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),
-                   tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full)
+                   tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full,
+                   int(material.pass_index))
 
 
 def usable_toon(material_name, toon):

@@ -1,6 +1,6 @@
 """Render passes beside Combined, offered the way Cycles and EEVEE offer theirs: Blender's Depth,
-Normal and Object Index when the view layer asks for them (use_pass_z, use_pass_normal,
-use_pass_object_index), and EdgeLight's own
+Normal, Mist, Object Index and Material Index when the view layer asks for them (use_pass_z,
+use_pass_normal, use_pass_mist, use_pass_object_index, use_pass_material_index), and EdgeLight's own
 Highlights, Lines and Surface, switched on per view layer (View Layer Properties -> EdgeLight
 Passes). How Combined is recomposed from them: docs/addon.md, "Render passes".
 """
@@ -16,6 +16,9 @@ from .panel_base import EdgeLightPanel
 BACKGROUND_DEPTH = 1e10
 # Blender's name of the Object Index pass (the compositor's Render Layers socket).
 OBJECT_INDEX = compat.OBJECT_INDEX_PASS
+MATERIAL_INDEX = compat.MATERIAL_INDEX_PASS
+# Buffers made from the first sample's ids ("ids": instance + 1, surface id), not drawn themselves.
+FROM_IDS = ("object_index", "material_index")
 
 # EdgeLight's own passes: (pass name, view-layer setting, frame buffer)
 OWN_PASSES = (
@@ -65,7 +68,9 @@ def enabled(view_layer):
     if view_layer.use_pass_mist:
         out.append(("Mist", 1, "Z", 'VALUE', "mist"))
     if view_layer.use_pass_object_index:
-        out.append((OBJECT_INDEX, 1, "X", 'VALUE', "ids"))
+        out.append((OBJECT_INDEX, 1, "X", 'VALUE', "object_index"))
+    if view_layer.use_pass_material_index:
+        out.append((MATERIAL_INDEX, 1, "X", 'VALUE', "material_index"))
     settings = getattr(view_layer, "edgelight", None)
     for name, prop, buffer in OWN_PASSES:
         if settings is not None and (getattr(settings, prop) or (buffer == "lines" and settings.lines_as_pass)):
@@ -86,11 +91,25 @@ def register_passes(engine, scene, view_layer):
 
 def buffers_wanted(view_layer):
     """{frame buffer: None} for frame.render to fill: only what an enabled pass needs (Mist is
-    made from the depth)."""
-    out = {buffer: None for *_, buffer in enabled(view_layer) if buffer and buffer != "mist"}
-    if view_layer.use_pass_mist:
+    made from the depth, the index passes from the ids)."""
+    wanted = [buffer for *_, buffer in enabled(view_layer) if buffer]
+    out = {buffer: None for buffer in wanted if buffer != "mist" and buffer not in FROM_IDS}
+    if "mist" in wanted:
         out["depth"] = None
+    if any(buffer in FROM_IDS for buffer in wanted):
+        out["ids"] = None
     return out
+
+
+def from_ids(buffers, view_layer, instances):
+    """Replaces the first sample's ids in `buffers` by the index passes the view layer asks for."""
+    ids = buffers.pop("ids", None)
+    if ids is None:
+        return
+    if view_layer.use_pass_object_index:
+        buffers["object_index"] = object_index(ids, instances)
+    if view_layer.use_pass_material_index:
+        buffers["material_index"] = material_index(ids, instances)
 
 
 # A scene without a world: Blender's defaults of World.mist_settings.
@@ -133,9 +152,25 @@ def object_index(ids, instances):
     return table[index][..., None]
 
 
+def material_index(ids, instances):
+    """The Material Index pass ((h, w, 1) float32) from the first sample's ids: each pixel's
+    material pass_index, through its instance's surface id -> triangle -> slot -> material
+    (scene_sync.MeshExtract.surface_pass_indices), 0 where nothing was drawn or the slot has no
+    material, as Cycles writes it."""
+    inst = np.rint(ids[..., 0]).astype(np.int64)
+    face = np.rint(ids[..., 1]).astype(np.int64)
+    out = np.zeros(inst.shape, np.float32)
+    for i in np.unique(inst[(inst > 0) & (inst <= len(instances))]).tolist():
+        table = instances[i - 1].mesh.surface_pass_indices()
+        sel = inst == i
+        f = face[sel]
+        f[(f < 0) | (f >= len(table))] = 0
+        out[sel] = table[f]
+    return out[..., None]
+
+
 def pass_pixels(buffer, data):
-    """A frame buffer ((h, w, 4) float32; "ids" already object_index's (h, w, 1)) as its render
-    pass stores it."""
+    """A frame buffer ((h, w, 4) float32; the index passes (h, w, 1)) as its render pass stores it."""
     if buffer == "depth":  # 1 / view depth, 0 = nothing drawn -> distance along the view axis
         inv = data[..., 0]
         out = np.full(inv.shape + (1,), BACKGROUND_DEPTH, np.float32)

@@ -46,6 +46,16 @@ class MeshExtract:
         out += [s.note for s in self.slot_shading if getattr(s, "note", "")]
         return list(dict.fromkeys(out))
 
+    def surface_pass_indices(self):
+        """Per surface id (what the surface pass writes for a triangle; 0: none), the Pass Index
+        of its slot's material (the Material Index render pass)."""
+        d = self.edge_data
+        table = np.zeros(int(d.surface_id.max(initial=0)) + 1, np.float32)
+        if len(d.surface_id):
+            by_slot = np.array([s.pass_index for s in self.slot_shading] or [0], np.float32)
+            table[d.surface_id] = by_slot[np.clip(d.tri_slot, 0, len(by_slot) - 1)]
+        return table
+
     def face_normals(self):
         if self._face_normals is None:
             self._face_normals = self.native.face_normals()

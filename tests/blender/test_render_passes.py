@@ -334,3 +334,69 @@ class ObjectIndex(unittest.TestCase):
         np.testing.assert_array_equal(px[..., 0], px[..., 1])
         self.check_values(rec, px[..., :1])
         np.testing.assert_array_equal(px[..., :1], rec["passes"][self.name()])
+
+
+class MaterialIndex(unittest.TestCase):
+    """Blender's Material Index pass (IndexMA; "Material Index" from 5.0): each pixel's material
+    pass_index through its face's slot, 0 where nothing was drawn or the slot is empty, beside
+    the Object Index pass from the same ids."""
+
+    def scene(self):
+        scene = helpers.empty_scene(240, 160)
+        zoo.top_camera(6.0)
+        helpers.add_sun()
+        a = zoo.box("A", 1.5, location=(-3.5, 0.0, 0.0))
+        a.pass_index = 3
+        two = [zoo.material("Two", (0.8, 0.2, 0.2)), zoo.material("Four", (0.2, 0.8, 0.2))]
+        two[0].pass_index, two[1].pass_index = 2, 4
+        for mat in two:
+            a.data.materials.append(mat)
+        top = max(a.data.polygons, key=lambda p: p.center.z)
+        top.material_index = 1  # the top face takes the second slot
+        b = zoo.box("B", 1.5, location=(0.0, 0.0, 0.0))
+        six = zoo.material("Six", (0.2, 0.2, 0.8))
+        six.pass_index = 6
+        b.data.materials.append(six)
+        zoo.box("Bare", 1.5, location=(3.5, 0.0, 0.0))  # no material: 0
+        layer = scene.view_layers[0]
+        layer.use_pass_material_index = True
+        layer.use_pass_object_index = True
+        return scene
+
+    def test_each_pixel_holds_its_faces_material_pass_index(self):
+        helpers.needs_gpu()
+        self.scene()
+        rec = helpers.render()
+        names = helpers.addon().render_passes
+        index = rec["passes"][names.MATERIAL_INDEX]
+        self.assertEqual(index.shape, (160, 240, 1))
+        seen_from_top = {4.0: (-3.5, 0.2, 0.75), 6.0: (0.3, -0.2, 0.75), 0.0: (3.5, 0.0, 0.75)}
+        for want, point in seen_from_top.items():
+            x, y = np.floor(helpers.project(rec, [point])[0]).astype(int)
+            self.assertEqual(index[y, x, 0], want, f"at {point}")
+        self.assertEqual(index[0, 0, 0], 0.0, "background")
+        self.assertEqual(set(np.unique(index)), {0.0, 4.0, 6.0}, "only top faces are seen from the top")
+        objects = rec["passes"][names.OBJECT_INDEX]
+        x, y = np.floor(helpers.project(rec, [(-3.5, 0.2, 0.75)])[0]).astype(int)
+        self.assertEqual(objects[y, x, 0], 3.0, "both passes from one id image")
+
+    def test_a_side_face_takes_its_own_slot(self):
+        helpers.needs_gpu()
+        scene = self.scene()
+        cam = scene.camera
+        cam.data.type = 'PERSP'
+        helpers.look_at(cam, (-3.5, -8.0, 0.0), (-3.5, 0.0, 0.0))  # the front face: A's slot 0
+        rec = helpers.render()
+        index = rec["passes"][helpers.addon().render_passes.MATERIAL_INDEX]
+        x, y = np.floor(helpers.project(rec, [(-3.5, -0.75, 0.0)])[0]).astype(int)
+        self.assertEqual(index[y, x, 0], 2.0)
+
+    def test_blenders_name_for_it(self):
+        scene = self.scene()
+        tree, _ = compositor(scene)
+        node = tree.nodes.new("CompositorNodeRLayers")
+        name = helpers.addon().render_passes.MATERIAL_INDEX
+        self.assertIn(name, {o.name for o in node.outputs if o.enabled})
+        scene.render.engine = 'CYCLES'  # the name Cycles registers
+        scene.view_layers[0].update_render_passes()
+        self.assertIn(name, {o.name for o in node.outputs if o.enabled})
