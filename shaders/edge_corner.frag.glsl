@@ -12,7 +12,8 @@
  * pass's Blinn-Phong (lighting.glsl), the specular tinted as the bands' (edge_shading.glsl). */
 vec3 el_corner_colour(vec3 X, vec3 N, vec3 V)
 {
-  vec3 col = frame.ambient.rgb * base_color.rgb;
+  vec3 col = frame.ambient.rgb *
+             (base_color.rgb + tint.rgb * el_env_specular(spec_color.rgb, spec_color.w, dot(N, V)));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
     col += el_blinn_phong(i, X, N, V, base_color.rgb, tint.rgb * spec_color.rgb, spec_color.w);

@@ -4,7 +4,9 @@
 vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
 {
   float n = spec_color.w;
-  vec3 col = frame.ambient.rgb * base_color.rgb;
+  /* The world on the arc: its lobe's albedo at the arc's mean cosine to the eye. */
+  float nv = el_arc_mean(g, V, edge, 1.0);
+  vec3 col = frame.ambient.rgb * (base_color.rgb + tint.rgb * el_env_specular(spec_color.rgb, n, nv));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
     vec3 L, E;
@@ -21,7 +23,7 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
  * shades it (Blinn-Phong mode): what a band replaces of it (el_faces_under_band). */
 vec3 el_face_colour(vec3 N, vec3 X, vec3 V)
 {
-  vec3 col = frame.ambient.rgb * base_color.rgb;
+  vec3 col = frame.ambient.rgb * (base_color.rgb + el_env_specular(spec_color.rgb, spec_color.w, dot(N, V)));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
     col += el_blinn_phong(i, X, N, V, base_color.rgb, spec_color.rgb, spec_color.w);

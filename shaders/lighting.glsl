@@ -48,6 +48,22 @@ vec3 el_blinn_phong(int i, vec3 X, vec3 N, vec3 V, vec3 albedo, vec3 spec, float
   return E * (albedo * (nl / 3.14159265) + spec * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
 }
 
+/* What a uniform world of radiance 1 puts into the specular lobe of reflectance F0 `spec` and
+ * Blinn exponent n seen at cos(angle to the normal) nv: the split sum (docs/highlight_math.md,
+ * "The world's light on the specular lobe"). A uniform world's prefiltered radiance is itself at
+ * every roughness, so only the lobe's directional albedo F0 A + B is left: Karis' fit of GGX's
+ * (A, B) at the roughness whose GGX matches n (n = 2 / alpha^2 - 2, roughness = sqrt(alpha)),
+ * times Fdez-Aguera's multiple-scattering gain, which keeps a rough metal's energy. */
+vec3 el_env_specular(vec3 spec, float n, float nv)
+{
+  float rough = pow(2.0 / (max(n, 0.0) + 2.0), 0.25);
+  vec4 r = rough * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
+  float a004 = min(r.x * r.x, exp2(-9.28 * clamp(nv, 0.0, 1.0))) * r.x + r.y;
+  vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+  float e = max(ab.x + ab.y, 1e-4);
+  return (spec * ab.x + ab.y) * (1.0 + spec * (1.0 / e - 1.0));
+}
+
 /* How an edge's radius in the object's units scales into world units under m (the Bevel
  * modifier's Amount is in object space too). The fillet's cross-section, square to the edge e,
  * meets each face along n x e (object space normals), which m stretches by |m (n x e)|; the band

@@ -81,7 +81,7 @@ void main()
   vec3 albedo = base_color.rgb;
   vec3 spec = spec_color.rgb;
   float n = spec_color.w;
-  vec3 col = frame.ambient.rgb * albedo;
+  vec3 col = frame.ambient.rgb * (albedo + el_env_specular(spec, n, dot(N, V)));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
     col += el_blinn_phong(i, world_pos, N, V, albedo, spec, n);

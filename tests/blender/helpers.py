@@ -96,6 +96,35 @@ def project(rec, points):
     return (ndc * 0.5 + 0.5) * np.array([cam.width, cam.height])
 
 
+def env_specular(spec, n, nv):
+    """lighting.glsl's el_env_specular: what a uniform world of radiance 1 puts into the specular
+    lobe of F0 `spec` and Blinn exponent n at cos(angle to the eye) nv (the shaders' copy is
+    pinned by the tests that use this one)."""
+    spec = np.asarray(spec, np.float64)
+    rough = (2.0 / (max(n, 0.0) + 2.0)) ** 0.25
+    r = rough * np.array([-1.0, -0.0275, -0.572, 0.022]) + np.array([1.0, 0.0425, 1.04, -0.04])
+    a004 = min(r[0] * r[0], 2.0 ** (-9.28 * min(max(nv, 0.0), 1.0))) * r[0] + r[1]
+    a, b = -1.04 * a004 + r[2], 1.04 * a004 + r[3]
+    return (spec * a + b) * (1.0 + spec * (1.0 / max(a + b, 1e-4) - 1.0))
+
+
+def world_on_arc(inp, eye_at_x, shading, ambient):
+    """The world's light on a rounded edge as el_edge_colour takes it: ambient times the diffuse
+    colour and the tinted lobe's albedo at the arc's mean cosine to the eye (the reference's
+    diffuse mean with the eye as the light). `inp`: the pixel's native.HighlightInput;
+    `eye_at_x`: the direction from its point to the eye."""
+    native = addon().native
+    light = list(inp.light)
+    v = np.asarray(eye_at_x, np.float64)
+    inp.light[:] = (v / np.linalg.norm(v)).tolist()
+    try:
+        nv = native.highlight_reference(inp).diffuse
+    finally:
+        inp.light[:] = light
+    return np.array(ambient) * (np.array(shading.base_color)
+                                + np.array(shading.tint) * env_specular(shading.spec_color, shading.shininess, nv))
+
+
 def luminance(rgb):
     return rgb[..., 0] * 0.2126 + rgb[..., 1] * 0.7152 + rgb[..., 2] * 0.0722
 

@@ -152,7 +152,9 @@ class CornerPatches(unittest.TestCase):
                     sides = [np.dot(n, np.cross(normals[i], normals[(i + 1) % 3])) * sign for i in range(3)]
                     if min(sides) < 0.0:
                         break
-                    col = np.asarray(rec["scene"].ambient) * s.base_color
+                    world = np.asarray(s.base_color) + np.asarray(s.tint) * helpers.env_specular(
+                        s.spec_color, n_exp, float(np.dot(n, -d)))
+                    col = np.asarray(rec["scene"].ambient) * world
                     grad, lobe = np.zeros((3, 3)), np.zeros(3)  # d colour / d normal (channel, xyz); the lobe
                     for light in rec["scene"].lights:
                         L = -np.asarray(light.direction)

@@ -184,7 +184,9 @@ class PartialArcMatchesQuadrature(unittest.TestCase):
             H /= np.linalg.norm(H)
             spec = np.sum(np.maximum(normals @ H, 0.0) ** n * weight) / weight.sum()
             diff = np.sum(np.maximum(normals @ Lw, 0.0) * weight) / weight.sum()
-            expected = (np.array(scene.ambient) * shading.base_color
+            nv = np.sum(np.maximum(normals @ V, 0.0) * weight) / weight.sum()  # the world's cosine
+            world = np.array(shading.base_color) + np.array(shading.tint) * helpers.env_specular(shading.spec_color, n, nv)
+            expected = (np.array(scene.ambient) * world
                         + np.array(light.color) * (np.array(shading.base_color) * diff / math.pi
                                                    + np.array(shading.tint) * shading.spec_color
                                                    * (n + 8.0) / (8.0 * math.pi) * spec))

@@ -78,6 +78,16 @@ struct Reference {
     dvec3 colour{0.0};
 };
 
+// lighting.glsl's el_env_specular: what a uniform world of radiance 1 puts into the specular lobe.
+dvec3 env_specular(const dvec3& spec, double n, double nv) {
+    const double rough = std::pow(2.0 / (std::max(n, 0.0) + 2.0), 0.25);
+    const glm::dvec4 r = rough * glm::dvec4(-1.0, -0.0275, -0.572, 0.022) + glm::dvec4(1.0, 0.0425, 1.04, -0.04);
+    const double a004 = std::min(r.x * r.x, std::exp2(-9.28 * std::clamp(nv, 0.0, 1.0))) * r.x + r.y;
+    const double a = -1.04 * a004 + r.z, b = 1.04 * a004 + r.w;
+    const double e = std::max(a + b, 1e-4);
+    return (spec * a + b) * (1.0 + spec * (1.0 / e - 1.0));
+}
+
 // The reference colour of the rounded edge at X, as the shader's el_edge_colour() composes it.
 Reference reference(const CubeScene& s, const dvec3& X, float shininess, float radius) {
     el_highlight_input in{};
@@ -95,10 +105,17 @@ Reference reference(const CubeScene& s, const dvec3& X, float shininess, float r
     in.K = float(s.camera.px_per_unit());
     Reference out;
     EXPECT_EQ(el_highlight_reference(&in, &out.r), EL_OK) << el_last_error();
+    // The world's light takes the arc's mean cosine to the eye: its diffuse mean with the eye
+    // as the light.
+    el_highlight_input to_eye = in;
+    const dvec3 V = glm::normalize(s.camera.eye - X);
+    for (int k = 0; k < 3; ++k) to_eye.light[k] = float(V[k]);
+    el_highlight_result seen{};
+    EXPECT_EQ(el_highlight_reference(&to_eye, &seen), EL_OK) << el_last_error();
     const auto& m = s.scene.material;
     const dvec3 base(m.base_color), spec(m.spec_color), tint(m.tint);
     const double n = shininess, blinn_norm = (n + 8.0) / (8.0 * M_PI);
-    out.colour = s.scene.ambient * base +
+    out.colour = s.scene.ambient * (base + tint * env_specular(spec, n, double(seen.diffuse))) +
                  s.scene.suns[0].color * (base * double(out.r.diffuse) / M_PI + tint * spec * blinn_norm * double(out.r.specular));
     return out;
 }
@@ -113,7 +130,7 @@ dvec3 face_colour(const CubeScene& s, const dvec3& X, const dvec3& N) {
                                                           spec * (n + 8.0) / (8.0 * M_PI) *
                                                               std::pow(std::max(glm::dot(N, glm::normalize(L + V)), 0.0), n))
                                : dvec3(0.0);
-    return s.scene.ambient * base + lit;
+    return s.scene.ambient * (base + env_specular(spec, n, glm::dot(N, V))) + lit;
 }
 
 // What the band's blend gets wrong about the faces it replaces, per unit of weight
