@@ -174,10 +174,13 @@ def unusable_vertices(positions):
     return ~(np.abs(positions) <= FARTHEST).all(axis=1)
 
 
-def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None):
+def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None, same_content=None):
     """Arrays and chosen edges of an evaluated mesh. Raises SkipObject with a reason. With
     `cache` (render_cache.ExtractCache), an extraction of the same object with the same content
-    is reused: its shading and lines set afresh, nothing classified again."""
+    is reused: its shading and lines set afresh, nothing classified again. With `same_content`
+    (a dict of this render's extractions by content and materials), a mesh equal to one already
+    extracted, as separate copies of one part are, is that extraction: one native mesh and one
+    set of GPU batches for all of them, as for linked duplicates (its notes name the first)."""
     mesh.calc_loop_triangles()
     tri_count = len(mesh.loop_triangles)
     if tri_count == 0:
@@ -235,16 +238,25 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
         flat = np.repeat(polygon_unit_normals(mesh, positions)[tri_poly], 3, axis=0)
         corner_nor = np.where(np.isfinite(corner_nor).all(axis=1, keepdims=True), corner_nor, flat)
     shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
-    key = None
+    key = content = None
+    if cache is not None or same_content is not None:
+        digest = render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot, marks, bevel,
+                                           tri_poly, polygons.start, polygons.total, polygons.loop_vert,
+                                           polygons.loop_edge, corner_nor))
+        # Shading follows from the materials alone within a render: their names decide.
+        content = (id(lib), digest, tuple(s.material for s in shading))
+        if same_content is not None and content in same_content:
+            return same_content[content]
     if cache is not None:
         # The content in the key: a Geometry Nodes host's own mesh and the meshes it generates
         # share its label.
-        key = (name, id(lib), render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot,
-                                                        marks, bevel, tri_poly, polygons.start, polygons.total,
-                                                        polygons.loop_vert, polygons.loop_edge, corner_nor)))
+        key = (name, id(lib), digest)
         kept = cache.get(key)
         if kept is not None:
-            return _reused(cache, key, kept, shading, line_settings)
+            out = _reused(cache, key, kept, shading, line_settings)
+            if same_content is not None:
+                same_content[content] = out
+            return out
     polygons.normal = polygon_unit_normals(mesh, positions)
     tri_normals = polygons.normal[tri_poly]
     try:
@@ -286,6 +298,8 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
     if cache is not None:
         _keep(cache, key, out, shading)
+    if same_content is not None:
+        same_content[content] = out
     return out
 
 
@@ -472,7 +486,7 @@ def holdouts(view_layer):
     return holdout
 
 
-def read_object(ob, label, materials, lib=None, line_settings=None, cache=None):
+def read_object(ob, label, materials, lib=None, line_settings=None, cache=None, same_content=None):
     """The extraction of one evaluated object (raises SkipObject), or None when it has no
     geometry at all (a Geometry Nodes host whose output is only instances)."""
     mesh = None
@@ -480,7 +494,8 @@ def read_object(ob, label, materials, lib=None, line_settings=None, cache=None):
         mesh = ob.to_mesh()
         if mesh is None or len(mesh.vertices) == 0:
             return None
-        return extract_mesh(label, mesh, materials, lib=lib, line_settings=line_settings, cache=cache)
+        return extract_mesh(label, mesh, materials, lib=lib, line_settings=line_settings, cache=cache,
+                            same_content=same_content)
     finally:
         if mesh is not None:
             ob.to_mesh_clear()
@@ -490,13 +505,14 @@ def collect(depsgraph, lib=None, line_settings=None, cache=None):
     """Everything visible in the evaluated scene. Objects that fail are reported and skipped.
     `cache`: a render_cache.ExtractCache that extractions are kept in and reused from."""
     reports, extracted, failed = [], {}, []
+    same_content = {}  # this render's extractions by content and materials (extract_mesh)
 
     def lookup(key, ob, inst, materials):
         if key not in extracted:
             extracted[key] = None
             try:
                 extracted[key] = read_object(ob, instance_label(inst), materials, lib=lib,
-                                             line_settings=line_settings, cache=cache)
+                                             line_settings=line_settings, cache=cache, same_content=same_content)
             except SkipObject as e:
                 reports.append(str(e))
                 if e.failed:

@@ -146,6 +146,29 @@ class Instances(unittest.TestCase):
         self.assertTrue(self.covered_at(rec, [(-2.0, 0.0, 0.5), (2.0, 1.0, 0.75), (2.7, 1.7, 0.75)]).all())
         self.assertFalse(self.covered_at(rec, [(-2.7, 0.0, 0.5)]).any(), "the scale is B's only")
 
+    def test_separate_copies_of_one_part_share_one_mesh(self):
+        # Shift+D copies the mesh: equal content under other names, as artists' scenes of many
+        # parts are. One extraction serves them (scene_sync.extract_mesh's same_content); a copy
+        # edited, or given another material, is its own.
+        a = zoo.box("A", 1.0, location=(-2.0, 0.0, 0.0))
+        for name, x in (("B", 0.0), ("C", 2.0), ("Edited", 0.0), ("Painted", 2.0)):
+            ob = bpy.data.objects.new(name, a.data.copy())
+            ob.location = (x, 2.0 if name in ("Edited", "Painted") else 0.0, 0.0)
+            bpy.context.scene.collection.objects.link(ob)
+        edited = bpy.data.objects["Edited"].data
+        edited.vertices[0].co.x -= 0.25
+        bpy.data.objects["Painted"].data.materials.append(zoo.material("Red", (0.8, 0.1, 0.1)))
+        rec = helpers.render()
+        meshes = {inst.mesh.name: id(inst.mesh) for inst in rec["scene"].instances}
+        by_object = [id(inst.mesh) for inst in rec["scene"].instances]
+        self.assertEqual(len(by_object), 5)
+        self.assertEqual(self.distinct(rec), 3, meshes)
+        self.assertTrue(self.covered_at(rec, [(-2.0, 0.0, 0.5), (0.0, 0.0, 0.5), (2.0, 0.0, 0.5),
+                                              (0.0, 2.0, 0.5), (2.0, 2.0, 0.5)]).all())
+        # The edited copy's bottom corner moved out to (-0.75, 1.5): drawn from its own mesh.
+        self.assertTrue(self.covered_at(rec, [(-0.6, 1.55, -0.5)]).all(), "the edited copy is its own")
+        self.assertFalse(self.covered_at(rec, [(1.4, 1.55, -0.5)]).any(), "the painted copy is not edited")
+
     def test_objects_not_drawn_are_reported_in_one_line(self):
         zoo.box("Block")
         smoke = bpy.data.objects.new("Smoke", bpy.data.volumes.new("Smoke"))
