@@ -28,26 +28,24 @@ def _keys(pairs, count):
 def rounded_records(extract):
     """(sorted keys, records) of the mesh's convex rounded edges: the strip's own records
     (rounded_outline._edges, EDGE_TEXELS texels each), found once per extraction."""
-    cached = getattr(extract, "_outline_records", None)
-    if cached is None:
+    def compute(extract):
         recs, _, verts = rounded_outline._edges(extract)
         known = np.all(verts >= 0, axis=1)
         recs, verts = recs[known], verts[known]
         keys = _keys(verts, len(extract.edge_data.positions))
         order = np.argsort(keys)
-        cached = extract._outline_records = (keys[order], recs[order])
-    return cached
+        return keys[order], recs[order]
+    return rounded_outline.from_edges(extract, "outline lines", compute)
 
 
 def corner_records(extract):
     """(sorted vertices, records) of the mesh's convex corner patches (rounded_outline._corners:
     ball centre and radius, vertex, three sectors' normals), found once per extraction."""
-    cached = getattr(extract, "_outline_corners", None)
-    if cached is None:
+    def compute(extract):
         recs, verts = rounded_outline._corners(extract)
         order = np.argsort(verts, kind="stable")
-        cached = extract._outline_corners = (np.asarray(verts, np.int64)[order], recs[order])
-    return cached
+        return np.asarray(verts, np.int64)[order], recs[order]
+    return rounded_outline.from_edges(extract, "outline corners", compute)
 
 
 def records_of(extract, edge_pairs):

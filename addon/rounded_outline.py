@@ -31,6 +31,18 @@ TRIANGLES_PER_ROW = 2048
 CONCAVE_END_DEG = 1.0
 
 
+def from_edges(extract, name, compute):
+    """compute(extract), kept in the extraction's `derived` (scene_sync.MeshExtract) for as long
+    as its chosen edges are these; computed each time for an extraction without one."""
+    derived = getattr(extract, "derived", None)
+    if derived is None:
+        return compute(extract)
+    memo = derived.get(name)
+    if memo is None or memo[0] is not extract.edges:
+        memo = derived[name] = (extract.edges, compute(extract))
+    return memo[1]
+
+
 def layout_defines():
     """The texture layouts above, as the surface program's defines (shaders/rounded_outline.glsl)."""
     return {"EL_OUTLINE_EDGE_TEXELS": EDGE_TEXELS, "EL_OUTLINE_EDGES_PER_ROW": EDGES_PER_ROW,

@@ -39,6 +39,11 @@ class MeshExtract:
     flips: np.ndarray = None                    # per triangle: the library reversed its winding (closed_surfaces)
     closed: bool = False                        # closed and consistently oriented: back faces hide (closed_surfaces)
     box: np.ndarray = None                      # (2, 3) object-space bounds of its surface
+    # What is computed from the chosen edges (rounded_outline.from_edges: the fillets' outline
+    # records), by name: (the edges it was computed from, the value). One dict shared by the
+    # copies a render cache makes, so a reused extraction whose edges were not chosen again does
+    # not compute it again.
+    derived: dict = field(default_factory=dict, repr=False)
 
     def notes(self):
         """Report lines about this geometry: what was drawn differently from the file and why."""

@@ -61,7 +61,7 @@ def outline_textures(extract):
     slot's triangles list anything, which of those more edges than the vertex shader judges),
     for the slots a strip or a corner may cross. Past what a texture holds, the outline stays
     the sharp mesh's."""
-    recs = rounded_outline.records(extract)
+    recs = rounded_outline.from_edges(extract, "outline", rounded_outline.records)  # once per edge choice
     if recs is None:
         return {}
     limit = gpu.capabilities.max_texture_size_get()

@@ -52,6 +52,29 @@ class RenderCache(unittest.TestCase):
         self.assertIs(native_of(second, "Box"), native_of(first, "Box"))
         np.testing.assert_array_equal(again, image)
 
+    def test_outline_records_are_kept_with_the_edges(self):
+        """The fillets' outline records (rounded_outline.records, for the surface pass) follow
+        from the chosen edges: a reused extraction does not compute them again, a radius change
+        (edges chosen again) does, and the image is the one a render from nothing draws."""
+        box = scene_with_box()
+        outline = helpers.addon().rounded_outline
+        calls, records = [], outline.records
+
+        def counted(extract):
+            calls.append(extract.name)
+            return records(extract)
+        outline.records = counted
+        try:
+            render()
+            render()
+            self.assertEqual(calls, ["Box"], "computed once for two renders")
+            box.data.materials[0].edgelight.radius = 0.15
+            _, image = render()
+            self.assertEqual(calls, ["Box", "Box"], "the edges were chosen again")
+        finally:
+            outline.records = records
+        np.testing.assert_array_equal(image, from_nothing())
+
     def test_edited_mesh_is_read_again(self):
         box = scene_with_box()
         first, image = render()
