@@ -45,9 +45,31 @@ def _value(socket):
 
 
 def output_node(tree):
-    """The material output Blender renders with: the active one, else the first."""
+    """The material output EEVEE renders with (its target EEVEE or All, the active one first),
+    as Blender picks it (ShaderNodeTree.get_output_node)."""
+    getter = getattr(tree, "get_output_node", None)
+    if getter is not None:
+        return getter('EEVEE')
     outputs = [n for n in tree.nodes if n.type == 'OUTPUT_MATERIAL']
     return next((n for n in outputs if n.is_active_output), outputs[0] if outputs else None)
+
+
+def world_background(world):
+    """(the Background node whose colour and strength light the scene or None, the node on the
+    world output's Surface or None): the output's own when it is one, else the first in the
+    tree (scene_sync.world_ambient reads the same)."""
+    if world is None or not compat.uses_nodes(world):
+        return None, None
+    tree = world.node_tree
+    getter = getattr(tree, "get_output_node", None)
+    output = getter('EEVEE') if getter is not None else None
+    if output is None:
+        outs = [n for n in tree.nodes if n.type == 'OUTPUT_WORLD']
+        output = next((n for n in outs if n.is_active_output), outs[0] if outs else None)
+    surface = _from_node(output.inputs["Surface"]) if output is not None else None
+    if surface is not None and surface.type == 'BACKGROUND':
+        return surface, surface
+    return next((n for n in tree.nodes if n.type == 'BACKGROUND'), None), surface
 
 
 def principled_of(material):
@@ -114,22 +136,20 @@ def panel_line(unread):
 
 def world_note(world):
     """The report line for a world whose light EdgeLight does not read; "" when it reads it all."""
-    if world is None or not compat.uses_nodes(world):
+    background, surface = world_background(world)
+    if surface is not None and surface is not background:
+        used = (f"the Background '{background.name}' lights the scene" if background is not None
+                else "the world's viewport colour lights the scene")
+        return f"world '{world.name}': its Surface is a {_describe(surface)}, which EdgeLight does not read; {used}"
+    if background is None:
         return ""
-    out = [n for n in world.node_tree.nodes if n.type == 'OUTPUT_WORLD']
-    output = next((n for n in out if n.is_active_output), out[0] if out else None)
-    surface = _from_node(output.inputs["Surface"]) if output is not None else None
-    if surface is None:
-        return ""
-    if surface.type != 'BACKGROUND':
-        return (f"world '{world.name}': its Surface is a {_describe(surface)}, which EdgeLight does not read; "
-                "the first Background's colour lights the scene")
     said = []
     for name in ("Color", "Strength"):
-        source = _from_node(surface.inputs[name])
+        source = _from_node(background.inputs[name])
         if source is not None:
             said.append(f"its {name} comes from {_describe(source)}")
     if not said:
         return ""
     return (f"world '{world.name}': " + " and ".join(said) + ", which EdgeLight does not read; the socket values "
-            f"(colour {_value(surface.inputs['Color'])}, strength {float(surface.inputs['Strength'].default_value):.3g}) light the scene")
+            f"(colour {_value(background.inputs['Color'])}, strength "
+            f"{float(background.inputs['Strength'].default_value):.3g}) light the scene")

@@ -157,16 +157,23 @@ def material_index(ids, instances):
     material pass_index, through its instance's surface id -> triangle -> slot -> material
     (scene_sync.MeshExtract.surface_pass_indices), 0 where nothing was drawn or the slot has no
     material, as Cycles writes it."""
+    # One table per extraction, concatenated; each instance points at its extraction's.
+    tables, start, offset, size = [], {}, np.zeros(len(instances) + 1, np.int64), np.zeros(len(instances) + 1, np.int64)
+    at = 1
+    for i, inst in enumerate(instances, 1):
+        key = id(inst.mesh)
+        if key not in start:
+            table = inst.mesh.surface_pass_indices()
+            start[key] = (at, len(table))
+            tables.append(table)
+            at += len(table)
+        offset[i], size[i] = start[key]
+    flat = np.concatenate([np.zeros(1, np.float32)] + tables)
     inst = np.rint(ids[..., 0]).astype(np.int64)
+    inst[(inst < 0) | (inst > len(instances))] = 0
     face = np.rint(ids[..., 1]).astype(np.int64)
-    out = np.zeros(inst.shape, np.float32)
-    for i in np.unique(inst[(inst > 0) & (inst <= len(instances))]).tolist():
-        table = instances[i - 1].mesh.surface_pass_indices()
-        sel = inst == i
-        f = face[sel]
-        f[(f < 0) | (f >= len(table))] = 0
-        out[sel] = table[f]
-    return out[..., None]
+    ok = (inst > 0) & (face >= 0) & (face < size[inst])
+    return np.where(ok, flat[np.where(ok, offset[inst] + face, 0)], 0.0).astype(np.float32)[..., None]
 
 
 def pass_pixels(buffer, data):

@@ -349,11 +349,10 @@ def world_ambient(scene):
     world = scene.world
     if world is None:
         return (0.0, 0.0, 0.0)
-    if compat.uses_nodes(world):
-        for node in world.node_tree.nodes:
-            if node.type == 'BACKGROUND':
-                c, s = node.inputs["Color"].default_value, node.inputs["Strength"].default_value
-                return tuple(float(v) * float(s) for v in c[:3])
+    node, _ = material_inputs.world_background(world)  # the one the world's note speaks of
+    if node is not None:
+        c, s = node.inputs["Color"].default_value, node.inputs["Strength"].default_value
+        return tuple(float(v) * float(s) for v in c[:3])
     return tuple(float(v) for v in world.color)
 
 

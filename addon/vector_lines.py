@@ -231,12 +231,30 @@ SLIVER_PX = 3.0  # a piece this short beside an earlier type's stroke is that st
 
 
 def _distance_to_segments(points, a, b):
-    """Per point (k, 2), the distance to the nearest of the segments a[i] -> b[i]."""
+    """(k, m): each point's (k, 2) distance to each segment a[i] -> b[i]."""
     d = b - a
     ll = np.maximum((d * d).sum(axis=1), 1e-12)
     t = np.clip(((points[:, None, :] - a[None]) * d[None]).sum(axis=2) / ll[None], 0.0, 1.0)
     q = a[None] + t[..., None] * d[None]
-    return np.sqrt(((points[:, None, :] - q) ** 2).sum(axis=2)).min(axis=1)
+    return np.sqrt(((points[:, None, :] - q) ** 2).sum(axis=2))
+
+
+def _length(p):
+    return float(np.linalg.norm(np.diff(p, axis=0), axis=1).sum()) if len(p) > 1 else 0.0
+
+
+def _segment_grid(a, b, cell):
+    """{grid cell: segments passing through it}: each segment's cells along its length (points
+    every half cell, and both ends), not its bounding box."""
+    n = np.maximum(1, np.ceil(np.linalg.norm(b - a, axis=1) / (0.5 * cell))).astype(np.int64)
+    seg = np.repeat(np.arange(len(a)), n + 1)
+    t = (np.arange(len(seg)) - np.repeat(np.cumsum(n + 1) - (n + 1), n + 1)) / np.repeat(n, n + 1)
+    pts = a[seg] + t[:, None] * (b[seg] - a[seg])
+    cells = np.floor(pts / cell).astype(np.int64)
+    grid = {}
+    for (cx, cy), i in set(zip(map(tuple, cells.tolist()), seg.tolist())):
+        grid.setdefault((cx, cy), []).append(i)
+    return grid
 
 
 def drop_slivers(out, order):
@@ -249,27 +267,24 @@ def drop_slivers(out, order):
     cell = 4.0 * SLIVER_PX
     for kind in order:
         groups = out.get(kind, ())
-        if drawn_a:
+        short = any(_length(p) <= SLIVER_PX for g in groups if not g.hidden for p in g.polylines)
+        if drawn_a and short:
             a, b, w = np.concatenate(drawn_a), np.concatenate(drawn_b), np.concatenate(drawn_w)
-            # The earlier strokes' segments by grid cell: a sliver looks only at its own cells.
-            lo_c = np.floor(np.minimum(a, b) / cell).astype(np.int64)
-            hi_c = np.floor(np.maximum(a, b) / cell).astype(np.int64)
-            grid = {}
-            for i in range(len(a)):
-                for cx in range(lo_c[i, 0], hi_c[i, 0] + 1):
-                    for cy in range(lo_c[i, 1], hi_c[i, 1] + 1):
-                        grid.setdefault((cx, cy), []).append(i)
+            grid = _segment_grid(a, b, cell)
             for st in (g for g in groups if not g.hidden):
                 kept = []
                 for p in st.polylines:
-                    length = float(np.linalg.norm(np.diff(p, axis=0), axis=1).sum()) if len(p) > 1 else 0.0
-                    if length <= SLIVER_PX:
-                        c0 = np.floor((p.min(axis=0) - SLIVER_PX) / cell).astype(np.int64)
-                        c1 = np.floor((p.max(axis=0) + SLIVER_PX) / cell).astype(np.int64)
+                    if _length(p) <= SLIVER_PX:
+                        # Past the touching distance by half a cell: the grid holds points of
+                        # each segment every half cell.
+                        reach = SLIVER_PX + 0.5 * cell
+                        c0 = np.floor((p.min(axis=0) - reach) / cell).astype(np.int64)
+                        c1 = np.floor((p.max(axis=0) + reach) / cell).astype(np.int64)
                         near = sorted({i for cx in range(c0[0], c1[0] + 1) for cy in range(c0[1], c1[1] + 1)
                                        for i in grid.get((cx, cy), ())})
-                        if near and np.all(_distance_to_segments(p, a[near], b[near])
-                                           <= 0.5 * (w[near].max() + st.width)):
+                        # Every point touches the ink of some earlier segment, at its own width.
+                        if near and np.all((_distance_to_segments(p, a[near], b[near])
+                                            <= 0.5 * (w[near][None] + st.width)).any(axis=1)):
                             continue
                     kept.append(p)
                 st.polylines = kept

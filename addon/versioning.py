@@ -101,21 +101,24 @@ def _groups():
 
 
 def made_with_old_defaults():
-    """Whether a scene of this file was drawn by EdgeLight before layout 5, whose defaults differ.
-    Layout 5 stamps every scene on save; before, only groups that stored a value were stamped,
-    and layout 1 stamped nothing. So an unstamped scene that stores settings, or is set to
-    EdgeLight in a saved file, is older. A file never saved (a new one, the add-on enabled
-    again) is not."""
-    for scene in bpy.data.scenes:
-        if scene.library is not None:
-            continue
-        group = scene.edgelight
-        if STAMP in group.keys():
-            if int(group[STAMP]) < 5:
-                return True
-        elif group.keys() or (scene.render.engine == 'EDGELIGHT' and bpy.data.filepath):
+    """Whether this file was drawn by EdgeLight before layout 5, whose defaults differ.
+    Layout 5 stamps every scene EdgeLight draws on save (and in memory when a file is opened);
+    before, only groups that stored a value were stamped, and layout 1 stamped nothing. So:
+    - a scene stamped 5 or later says the file is current (a scene added since it was saved,
+      or an autosave, which runs no save handler, has none yet);
+    - else a group stamped older, a group that stores values without a stamp, or a scene set
+      to EdgeLight in a saved file says it is older.
+    A file never saved (a new one) is not."""
+    local = [(kind, group) for kind, group in _groups()]
+    if any(kind == "scene" and int(group.get(STAMP, 0)) >= 5 for kind, group in local):
+        return False
+    for kind, group in local:
+        if STAMP in group.keys() and int(group[STAMP]) < 5:
             return True
-    return False
+        if STAMP not in group.keys() and group.keys():
+            return True
+    return bool(bpy.data.filepath) and any(
+        s.library is None and s.render.engine == 'EDGELIGHT' for s in bpy.data.scenes)
 
 
 def _keep_unstored_defaults():
@@ -142,14 +145,29 @@ def upgrade_all():
         count = _keep_unstored_defaults()
         if count:
             upgraded[4] = upgraded.get(4, 0) + count
+    # The scenes EdgeLight draws say from now on that these defaults are current.
+    for kind, group in _groups():
+        if kind == "scene" and _uses_edgelight(group) and int(group.get(STAMP, 0)) < SETTINGS_VERSION:
+            group.settings_version = SETTINGS_VERSION
     return upgraded
+
+
+def _uses_edgelight(scene_group):
+    """A scene that stores EdgeLight settings or renders with it: the scenes stamped even when
+    they store nothing (a scene of another engine gets no EdgeLight data)."""
+    return bool(scene_group.keys()) or scene_group.id_data.render.engine == 'EDGELIGHT'
 
 
 def stamp_all():
     """Records the current layout in every group that stores something, and in every scene, so
-    the next load knows which defaults the file was made with."""
+    the next load knows which defaults the file was made with (a scene of another engine gets
+    nothing). A group stamped older (appended
+    or pasted from an older file since it was opened) is upgraded first, not relabelled; an
+    unstamped one is this session's."""
     for kind, group in _groups():
-        if (group.keys() or kind == "scene") and group.get(STAMP, 0) < SETTINGS_VERSION:
+        if STAMP in group.keys() and int(group[STAMP]) < SETTINGS_VERSION:
+            upgrade(group, kind)
+        if (group.keys() or (kind == "scene" and _uses_edgelight(group))) and group.get(STAMP, 0) < SETTINGS_VERSION:
             group.settings_version = SETTINGS_VERSION
 
 
@@ -161,7 +179,10 @@ def _load_post(*_args):
 
 
 def _upgrade_open_file():
-    _load_post()
+    # Enabled with a file already open: upgrade it as loaded, not after edits made without the
+    # add-on (an unstamped group of this session would read as layout 1).
+    if not bpy.data.is_dirty:
+        _load_post()
     return None  # once
 
 

@@ -61,7 +61,8 @@ vec3 el_env_specular(vec3 spec, float n, float nv)
   float a004 = min(r.x * r.x, exp2(-9.28 * clamp(nv, 0.0, 1.0))) * r.x + r.y;
   vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
   float e = max(ab.x + ab.y, 1e-4);
-  return (spec * ab.x + ab.y) * (1.0 + spec * (1.0 / e - 1.0));
+  /* Karis' B dips below zero at high roughness: no lobe reflects less than nothing. */
+  return max((spec * ab.x + ab.y) * (1.0 + spec * (1.0 / e - 1.0)), vec3(0.0));
 }
 
 /* How an edge's radius in the object's units scales into world units under m (the Bevel

@@ -105,7 +105,7 @@ def env_specular(spec, n, nv):
     r = rough * np.array([-1.0, -0.0275, -0.572, 0.022]) + np.array([1.0, 0.0425, 1.04, -0.04])
     a004 = min(r[0] * r[0], 2.0 ** (-9.28 * min(max(nv, 0.0), 1.0))) * r[0] + r[1]
     a, b = -1.04 * a004 + r[2], 1.04 * a004 + r[3]
-    return (spec * a + b) * (1.0 + spec * (1.0 / max(a + b, 1e-4) - 1.0))
+    return np.maximum((spec * a + b) * (1.0 + spec * (1.0 / max(a + b, 1e-4) - 1.0)), 0.0)
 
 
 def world_on_arc(inp, eye_at_x, shading, ambient):

@@ -69,15 +69,68 @@ class OldFilesKeepTheirLook(unittest.TestCase):
         path = os.path.join(tempfile.mkdtemp(), "untouched.blend")
         bpy.ops.wm.save_as_mainfile(filepath=path)
         if not stamped:
-            bpy.app.handlers.save_pre.remove(helpers.addon().versioning._save_pre)
-            try:
-                del scene.edgelight["settings_version"]
-                bpy.ops.wm.save_as_mainfile(filepath=path)
-            finally:
-                bpy.app.handlers.save_pre.append(helpers.addon().versioning._save_pre)
+            del scene.edgelight["settings_version"]
+            self.save_without_stamps(path)
         self.assertEqual(len(bpy.data.materials["Material"].edgelight.keys()), 0)
         bpy.ops.wm.open_mainfile(filepath=path)
         return bpy.data.materials["Material"].edgelight
+
+    def save_without_stamps(self, path):
+        """Saves as an older add-on (or an autosave, which runs no save handler) would."""
+        versioning = helpers.addon().versioning
+        bpy.app.handlers.save_pre.remove(versioning._save_pre)
+        try:
+            bpy.ops.wm.save_as_mainfile(filepath=path)
+        finally:
+            bpy.app.handlers.save_pre.append(versioning._save_pre)
+
+    def test_old_materials_say_so_when_the_scene_does_not(self):
+        # Saved with layout 4 by a scene since switched to another engine, storing nothing of
+        # EdgeLight's: a material's stamp 4 says the file is older.
+        default_scene().render.engine = helpers.addon().compat.eevee_engine_id()
+        old = bpy.data.materials.new("Stamped")
+        old.use_fake_user = True
+        old.edgelight["K"], old.edgelight["settings_version"] = 0.5, 4
+        path = os.path.join(tempfile.mkdtemp(), "layout4.blend")
+        self.save_without_stamps(path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        self.assertAlmostEqual(bpy.data.materials["Material"].edgelight.radius, 0.01, 6)
+        self.assertAlmostEqual(bpy.data.materials["Stamped"].edgelight.radius, 0.01, 6)
+
+    def test_a_scene_added_since_the_save_is_no_old_file(self):
+        # A current file, then a scene added and saved by an autosave (no save handler): the
+        # stamped scene says the file is current.
+        scene = default_scene()
+        scene.edgelight.samples = 2
+        path = os.path.join(tempfile.mkdtemp(), "current.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        extra = bpy.data.scenes.new("Added")
+        extra.render.engine = 'EDGELIGHT'
+        self.save_without_stamps(path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        group = bpy.data.materials["Material"].edgelight
+        self.assertAlmostEqual(group.radius, 0.05, 6)
+        self.assertEqual(len(group.keys()), 0)
+
+    def test_an_older_material_pasted_in_is_upgraded_on_save(self):
+        # A layout-4 material appended into a current file keeps its 1 cm when saved, instead
+        # of being stamped current with nothing stored.
+        default_scene().edgelight.samples = 2
+        pasted = bpy.data.materials.new("Pasted")
+        pasted.use_fake_user = True
+        pasted.edgelight["K"], pasted.edgelight["settings_version"] = 0.5, 4
+        path = os.path.join(tempfile.mkdtemp(), "pasted.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        self.assertAlmostEqual(bpy.data.materials["Pasted"].edgelight.radius, 0.01, 6)
+        self.assertAlmostEqual(bpy.data.materials["Material"].edgelight.radius, 0.05, 6)
+
+    def test_a_scene_of_another_engine_gets_no_edgelight_data(self):
+        default_scene().render.engine = helpers.addon().compat.eevee_engine_id()
+        path = os.path.join(tempfile.mkdtemp(), "eevee.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        self.assertEqual(len(bpy.context.scene.edgelight.keys()), 0)
 
     def test_unstamped_file_keeps_old_default(self):
         self.assertAlmostEqual(self.saved_untouched(stamped=False).radius, 0.01, 6)

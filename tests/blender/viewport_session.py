@@ -168,7 +168,7 @@ def panel_labels():
     from edgelight.panel_base import EdgeLightPanel
     window, area, _ = properties_editor()
     panels = [cls for cls in edgelight.ui.CLASSES if getattr(cls, "bl_context", None) in ("render", "material", "data")]
-    texts, probes = {}, []
+    texts, probes, polled = {}, [], set()
     # A registered panel's draw cannot be swapped (Blender holds the function): each panel is
     # drawn again by a probe panel of the same tab that calls its draw and reads the layout.
     def probe_of(cls):
@@ -179,7 +179,10 @@ def panel_labels():
             texts[cls.__name__] = (labels, checks)
 
         def poll(_probe, context):
-            return cls.poll(context)
+            shown = cls.poll(context)
+            if shown:
+                polled.add(cls.__name__)
+            return shown
         name = "EDGELIGHT_PT_probe_" + cls.__name__[len("EDGELIGHT_PT_"):]
         return type(name, (EdgeLightPanel, bpy.types.Panel), {
             "bl_idname": name, "bl_label": cls.bl_label, "bl_context": cls.bl_context,
@@ -211,9 +214,10 @@ def panel_labels():
                 for t, limit in [(t, reference) for t in labels] + [(t, 1.5 * reference - box) for t in checks]
                 if text_width(t) > limit]
     boxes = sorted({(t, round(text_width(t))) for _labels, checks in texts.values() for t in checks})
+    unmeasured = sorted(polled - set(texts))  # shown, but its draw failed before the layout was read
     check("panels: every EdgeLight label fits where Blender's 'Render Engine' does",
-          len(texts) >= 4 and not too_wide, f"drawn {sorted(texts)}; limits {reference:.0f} px, checkboxes "
-          f"{1.5 * reference - box:.0f} px; too wide {too_wide}; checkboxes {boxes}")
+          len(texts) >= 10 and not unmeasured and not too_wide, f"drawn {sorted(texts)}; limits {reference:.0f} px, checkboxes "
+          f"{1.5 * reference - box:.0f} px; too wide {too_wide}; checkboxes {boxes}; unmeasured {unmeasured}")
     crease = [t for labels, _ in texts.values() for t in labels if "Crease" in t or "Normals" in t]
     check("panels: the crease angle shown once", crease == ["Crease Angle"], f"{crease}")
 
@@ -568,8 +572,11 @@ def failed_render(window, area, region):
     import edgelight
     scene = bpy.context.scene
     edgelight.engine.last_render.clear()
+    import gpu
     saved = scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples
-    scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples = 30000, 64, 1
+    # One pixel wider than this GPU's textures (16384 on llvmpipe, 32768 on others).
+    scene.render.resolution_x = gpu.capabilities.max_texture_size_get() + 1
+    scene.render.resolution_y, scene.edgelight.samples = 64, 1
     with bpy.context.temp_override(window=window, area=area, region=region):
         bpy.ops.render.render('INVOKE_DEFAULT')
     for _ in range(60):
@@ -585,8 +592,13 @@ def failed_render(window, area, region):
         check("failed F12: a render window shows the result", False, f"{[w.screen.name for w in windows]}")
         return
     px, path = window_screenshot(render_win, "failed_render_window")
-    # The stats line: light text in the image editor's top rows, below its header.
-    band = px[24:56].max(axis=-1).max(axis=0) > 0.8
+    # The stats line: light text in the image editor's main region's top 1.5 UI rows (below its
+    # header, at the window's own scale).
+    editor = next(a for a in render_win.screen.areas if a.type == 'IMAGE_EDITOR')
+    main = next(r for r in editor.regions if r.type == 'WINDOW')
+    top = render_win.height - (main.y + main.height)
+    row = int(round(20 * bpy.context.preferences.system.ui_scale))
+    band = px[top:top + int(1.5 * row)].max(axis=-1).max(axis=0) > 0.8
     text_end = int(np.nonzero(band)[0].max()) if band.any() else 0
     message = errors[0] if errors else ""
     check("failed F12: the render window's stats line carries the error",

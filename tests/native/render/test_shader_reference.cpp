@@ -85,7 +85,7 @@ dvec3 env_specular(const dvec3& spec, double n, double nv) {
     const double a004 = std::min(r.x * r.x, std::exp2(-9.28 * std::clamp(nv, 0.0, 1.0))) * r.x + r.y;
     const double a = -1.04 * a004 + r.z, b = 1.04 * a004 + r.w;
     const double e = std::max(a + b, 1e-4);
-    return (spec * a + b) * (1.0 + spec * (1.0 / e - 1.0));
+    return glm::max((spec * a + b) * (1.0 + spec * (1.0 / e - 1.0)), dvec3(0.0));
 }
 
 // The reference colour of the rounded edge at X, as the shader's el_edge_colour() composes it.
