@@ -121,32 +121,47 @@ def sample_runs(seg, matrix, instance_id, kind, style, camera, depth, ids, round
 
 def _weld(pts, join):
     """Node of each point: points equal to 1/1024 px are one node, and with `join` > 0 so are
-    points closer than `join` (union-find over a grid of that size)."""
+    points closer than `join` (grid cells of that size: close pairs are in the same or a
+    neighbouring cell; their nodes joined by label propagation). Node numbers are labels, not
+    consecutive."""
     key = np.round(pts * 1024.0).astype(np.int64)
     _, node = np.unique(key, axis=0, return_inverse=True)
     node = node.reshape(-1)
     if join <= 0.0 or len(pts) < 2:
         return node
-    parent = list(range(node.max() + 1))
-
-    def root(i):
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
-
-    cells = {}
-    for i, c in enumerate(map(tuple, np.floor(pts / join).astype(np.int64).tolist())):
-        cells.setdefault(c, []).append(i)
-    for (cx, cy), members in cells.items():
-        near = [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in cells.get((cx + dx, cy + dy), ())]
-        for i in members:
-            for j in near:
-                if j > i and np.hypot(*(pts[i] - pts[j])) < join:
-                    ri, rj = root(int(node[i])), root(int(node[j]))
-                    if ri != rj:
-                        parent[rj] = ri
-    return np.array([root(int(n)) for n in node])
+    cell = np.floor(pts / join).astype(np.int64)
+    cell -= cell.min(axis=0)
+    width = int(cell[:, 1].max()) + 3
+    code = (cell[:, 0] + 1) * width + (cell[:, 1] + 1)
+    order = np.argsort(code, kind="stable")
+    sorted_code = code[order]
+    pairs_i, pairs_j = [], []
+    # Each pair once: the same cell (i < j), and four of the eight neighbours.
+    for dx, dy in ((0, 0), (1, -1), (1, 0), (1, 1), (0, 1)):
+        target = code + dx * width + dy
+        lo = np.searchsorted(sorted_code, target, side="left")
+        hi = np.searchsorted(sorted_code, target, side="right")
+        count = hi - lo
+        i = np.repeat(np.arange(len(pts)), count)
+        j = order[np.repeat(lo, count) + (np.arange(len(i)) - np.repeat(np.cumsum(count) - count, count))]
+        keep = (i < j) if (dx, dy) == (0, 0) else np.ones(len(i), bool)
+        i, j = i[keep], j[keep]
+        close = np.hypot(*(pts[i] - pts[j]).T) < join
+        pairs_i.append(node[i[close]])
+        pairs_j.append(node[j[close]])
+    u, v = np.concatenate(pairs_i), np.concatenate(pairs_j)
+    if not len(u):
+        return node
+    label = np.arange(node.max() + 1)
+    while True:  # each node takes the least label of its close ones, until none changes
+        m = np.minimum(label[u], label[v])
+        new = label.copy()
+        np.minimum.at(new, u, m)
+        np.minimum.at(new, v, m)
+        new = new[new]  # jump along the labels
+        if np.array_equal(new, label):
+            return label[node]
+        label = new
 
 
 def chain(a, b, join=0.0):
@@ -166,10 +181,12 @@ def chain(a, b, join=0.0):
         adj.setdefault(v, []).append(e)  # end e: run e % n, its a (e < n) or b
     used = np.zeros(n, bool)
 
-    def direction(e_from, e_to):
-        d = pts[e_to] - pts[e_from]
-        length = float(np.hypot(d[0], d[1]))
-        return d / length if length > 0.0 else d
+    # The unit direction leaving each end through its run (zero for a run of no length).
+    d = pts[n:] - pts[:n]
+    length = np.hypot(d[:, 0], d[:, 1])
+    unit = np.where(length[:, None] > 0.0, d / np.where(length > 0.0, length, 1.0)[:, None], 0.0)
+    leave = np.r_[unit, -unit]
+    node_of = node.tolist()
 
     def walk(e):
         """The path from end e through its run and on; returns its points."""
@@ -180,11 +197,15 @@ def chain(a, b, join=0.0):
             used[r] = True
             if np.hypot(*(pts[other] - path[-1])) > 0.0:
                 path.append(pts[other])
-            heading = direction(e, other)
-            candidates = [f for f in adj[node[other]] if not used[f % n]]
+            candidates = [f for f in adj[node_of[other]] if not used[f % n]]
             if not candidates:
                 return np.array(path)
-            e = max(candidates, key=lambda f: float(direction(f, f + n if f < n else f - n) @ heading))
+            # The straightest on: the first of the largest cosines, as max() took it.
+            if len(candidates) > 1:
+                h, c = leave[e], leave[candidates]
+                e = candidates[int(np.argmax(c[:, 0] * h[0] + c[:, 1] * h[1]))]
+            else:
+                e = candidates[0]
             if np.hypot(*(pts[e] - path[-1])) > 0.0:  # a bridged gap
                 path.append(pts[e])
 
