@@ -2,9 +2,10 @@
 change, or a frame rendered again after a camera or light change, does not classify and choose
 the edges of every mesh afresh (on a 400k-triangle grid that was 2 of a render's 4 seconds).
 
-An extraction is reused only for the same object (its label) and the same content: a
-fingerprint of every array the extraction reads from the evaluated mesh (positions, topology,
-corner normals, edge marks, bevel weights, material indices). The materials' shading and the
+An extraction is reused for the same content, whichever object has it (copies of one part
+under other names are one mesh): a fingerprint of every array the extraction reads from the
+evaluated mesh (positions, topology, corner normals, edge marks, bevel weights, material
+indices). The materials' shading and the
 line settings are applied afresh on reuse, as the viewport does on a material change. Within a
 render job (every frame of an animation) only what a scene's previous frame used is kept past
 its frame change; when the job ends, what each scene's last frame used is kept if the scene's
@@ -28,7 +29,7 @@ def fingerprint(arrays):
 
 
 class ExtractCache:
-    """Kept values by key: (object label, library, content fingerprint), each with the scene
+    """Kept values by key: (library, content fingerprint), each with the scene
     whose render kept it. Per scene, what its current frame used; the previous frame's unused
     ones are dropped when its frame changes, and a job's end keeps only what the last frame of
     each scene it rendered used (or nothing). Renders run on the render thread, file loads and

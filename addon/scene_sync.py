@@ -253,9 +253,10 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
         if same_content is not None and content in same_content:
             return same_content[content]
     if cache is not None:
-        # The content in the key: a Geometry Nodes host's own mesh and the meshes it generates
-        # share its label.
-        key = (name, id(lib), digest)
+        # Keyed by the content alone: a Geometry Nodes host's own mesh and the meshes it
+        # generates share its label, and copies of one part under other names are one mesh
+        # (whichever of them the depsgraph lists first this time).
+        key = (id(lib), digest)
         kept = cache.get(key)
         if kept is not None:
             out = _reused(cache, key, kept, shading, line_settings)

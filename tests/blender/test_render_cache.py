@@ -75,6 +75,22 @@ class RenderCache(unittest.TestCase):
             outline.records = records
         np.testing.assert_array_equal(image, from_nothing())
 
+    def test_a_copy_under_another_name_reuses_the_mesh(self):
+        """Kept by content, not by object: with the object that was extracted gone, its copy
+        (another object with a copy of the mesh, Shift+D) reuses what was kept."""
+        box = scene_with_box()
+        copy = bpy.data.objects.new("Copy", box.data.copy())
+        copy.location = (0.0, 3.0, 0.0)
+        bpy.context.scene.collection.objects.link(copy)
+        first, _ = render()
+        natives = {inst.mesh.native for inst in first["scene"].instances}
+        self.assertEqual(len(natives), 1, "one extraction for both")
+        extracted = first["scene"].instances[0].mesh.name  # the one the extraction was made from
+        bpy.data.objects.remove(bpy.data.objects[extracted])
+        second, image = render()
+        self.assertIs(second["scene"].instances[0].mesh.native, natives.pop())
+        np.testing.assert_array_equal(image, from_nothing())
+
     def test_edited_mesh_is_read_again(self):
         box = scene_with_box()
         first, image = render()
