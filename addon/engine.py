@@ -331,7 +331,6 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
                            transparent=depsgraph.scene.render.film_transparent, lines=line_settings,
                            ids="ids" in buffers,
                            lines_in_combined=render_passes.lines_in_combined(depsgraph.view_layer))
-        keep = {} if capture else None
         reported = len(data.reports)
 
         def progress(done, total):
@@ -340,12 +339,14 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             if capture:
                 record.setdefault("progress", []).append((done, total, time.monotonic()))
 
-        vector = {} if line_settings is not None and svg_output.wanted(depsgraph.scene) else None
-        pixels, stats = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=keep,
-                                     passes=buffers, preview=preview, vector=vector)
+        svg = line_settings is not None and svg_output.wanted(depsgraph.scene)
+        out = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=capture,
+                           passes=tuple(buffers), preview=preview, vector=svg)
+        stats, vector = out.stats, out.lines
+        buffers.update(out.passes)
         # Which instance and face cover each pixel -> its object's and its material's pass_index.
         render_passes.from_ids(buffers, depsgraph.view_layer, data.instances)
-        pixels = crop(pixels)
+        pixels = crop(out.pixels)
         for name, buffer in buffers.items():
             if buffer is not None:
                 buffers[name] = crop(buffer)
@@ -353,8 +354,7 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             world = depsgraph.scene.world
             buffers["mist"] = render_passes.mist(buffers["depth"], record["camera"],
                                                  world.mist_settings if world else render_passes.DEFAULT_MIST)
-        for name, buffer in (keep or {}).items():
-            keep[name] = crop(buffer)
+        kept = {name: crop(buffer) for name, buffer in (out.kept or {}).items()}
         if vector is not None and not self.test_break():  # the lines as SVG beside the frame
             view = (crop.dx, camera.height - crop.dy - crop.h, crop.w, crop.h)
             try:
@@ -370,7 +370,7 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         if stats.samples == 0 and not self.test_break():
             raise RenderRefused("no sample was drawn")
         if capture:
-            record.update(keep, pixels=pixels, stats=stats, reports=list(data.reports), scene=data)
+            record.update(kept, pixels=pixels, stats=stats, reports=list(data.reports), scene=data)
         self.update_stats("EdgeLight", f"{stats.objects} objects, {stats.edges_drawn} edges, {stats.lines_drawn} line segments")
         return pixels
 

@@ -50,10 +50,10 @@ def frame_svg_path(scene, layer=None, still=False, view=None):
 
 
 def write(path, scene_data, camera, line_settings, vector, view=None):
-    """Writes the SVG of one frame; returns its size in bytes. `view`: svg_write.document's."""
-    instances = vector_lines.instances_of(scene_data, vector.get("view_segments"))
-    strokes = vector_lines.strokes(instances, line_settings, camera, vector["depth"], vector["ids"],
-                                   vector.get("rounded", False))
+    """Writes the SVG of one frame from its line record (frame.LineRecord); returns its size in
+    bytes. `view`: svg_write.document's."""
+    instances = vector_lines.instances_of(scene_data, vector.view_segments)
+    strokes = vector_lines.strokes(instances, line_settings, camera, vector.depth, vector.ids, vector.rounded)
     root = svg_write.document(strokes, line_settings, camera.width, camera.height, view=view)
     os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
     svg_write.write(path, root)
@@ -65,7 +65,7 @@ def write_render(scene, layer, scene_data, camera, line_settings, vector, record
     """The engine's hook after a frame: the frame's SVG (or the pending export's); `view`, the
     part of the drawn frame Blender asked for (svg_write.document); `still`, `eye` (the
     multiview view): frame_svg_path's `still` and `view`."""
-    if line_settings is None or "depth" not in vector:
+    if line_settings is None or vector is None:
         return
     start = time.perf_counter()
     path = _pending.pop("path", None) or frame_svg_path(scene, layer, still, eye)
@@ -131,9 +131,10 @@ class EDGELIGHT_OT_export_svg(bpy.types.Operator):
         depsgraph = context.evaluated_depsgraph_get()
         line_settings = lines.settings_of(context.scene.edgelight)
         data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings)
-        vector = {}
-        frame.render(data, camera, frame.Settings(samples=1, highlights=False, lines=line_settings), vector=vector)
-        write(path, data, camera, line_settings, vector)
+        out = frame.render(data, camera, frame.Settings(samples=1, highlights=False, lines=line_settings), vector=True)
+        if out.lines is None:
+            raise RuntimeError("EdgeLight: no sample was drawn for the SVG")
+        write(path, data, camera, line_settings, out.lines)
 
 
 class EDGELIGHT_PT_lines_svg(EdgeLightPanel, bpy.types.Panel):

@@ -69,7 +69,7 @@ def half_widths(style, z, taper_t, camera):
 def sample_runs(seg, matrix, instance_id, kind, style, camera, depth, ids, rounded=False):
     """Runs of equal visibility and stepped width along each segment: (a, b, hidden, width)
     arrays, a / b the run's ends in pixels (y up). `rounded`: the fillets' outline was drawn
-    (frame.render's vector["rounded"])."""
+    (frame.LineRecord.rounded)."""
     sa, sb, za, zb, t0, t1, keep = project(seg, matrix, camera)
     taper = np.asarray(seg.taper, np.float64)
     ta = taper[:, 0] + t0 * (taper[:, 1] - taper[:, 0])

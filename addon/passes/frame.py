@@ -129,25 +129,47 @@ PREVIEW_INTERVAL = 1.0
 PASS_BUFFERS = ("surface", "highlight", "lines", "depth", "normal", "ids")
 
 
-def render(scene, camera, settings, progress=None, cancelled=None, keep=None, passes=None, preview=None,
-           vector=None):
-    """Final render: draws and reads back ((h, w, 4) scene-linear float RGBA, Stats).
+@dataclass(frozen=True)
+class LineRecord:
+    """What the line pass decided visibility from, for the vector output, which repeats its rule
+    (vector_lines.py): the first sample's surface_depth (1 / view depth, 0 = empty) and
+    surface_id (instance + 1, face), which later samples overwrite; per instance the
+    view-dependent LineSegments; and whether the fillets' outline was drawn with the silhouettes
+    on it, so that creases past it are left out (line_pass.draw_lines)."""
+    depth: np.ndarray
+    ids: np.ndarray
+    view_segments: list
+    rounded: bool
 
-    `keep`, when a dict, receives the last sample's surface, highlight and depth buffers.
-    `passes`, when a dict, names the render-pass buffers to read back (keys of PASS_BUFFERS) and
-    receives them: "surface" the sample mean of the surface, "highlight" and "lines" the
-    premultiplied bands and ink, "depth" the first sample's 1 / view depth (0 = empty), "normal"
-    its world normals, "ids" the first sample's surface_id (instance + 1, face; drawn only when
-    settings.ids or the edge or line passes run). Only what is named is drawn into or read back.
+
+@dataclass(frozen=True)
+class FrameResult:
+    """A final render's frame: the image ((h, w, 4) scene-linear float RGBA), its Stats, the
+    render-pass buffers asked for (render(passes=...)), the last sample's buffers when kept, and
+    the line record when asked for. Read, never filled in by the caller."""
+    pixels: np.ndarray
+    stats: "Stats"
+    passes: dict
+    kept: dict = None
+    lines: LineRecord = None
+
+
+def render(scene, camera, settings, progress=None, cancelled=None, keep=False, passes=(), preview=None,
+           vector=False):
+    """Final render: draws and reads back a FrameResult.
+
+    `keep`: the result keeps the last sample's surface, highlight, depth and lines buffers.
+    `passes` names the render-pass buffers to read back (keys of PASS_BUFFERS): "surface" the
+    sample mean of the surface, "highlight" and "lines" the premultiplied bands and ink,
+    "depth" the first sample's 1 / view depth (0 = empty), "normal" its world normals, "ids" the
+    first sample's surface_id (instance + 1, face; drawn only when settings.ids or the edge or
+    line passes run). Only what is named is drawn into or read back.
     `preview(pixels)`, when given, receives the image accumulated so far, at most once per
     PREVIEW_INTERVAL seconds of drawing.
-    `vector`, when a dict, receives what the line pass decided visibility from (the vector
-    output repeats its rule): "depth" and "ids" (the first sample's surface_depth and
-    surface_id), "view_segments" (per instance, the view-dependent LineSegments) and "rounded"
-    (whether the fillets' outline was drawn and the silhouettes on it, so that creases past it
-    are left out: line_pass.draw_lines)."""
+    `vector`: the result carries the LineRecord the vector output needs."""
     w, h = camera.width, camera.height
     wanted = set(passes or ())
+    read_back, line_depth = {}, []
     targets = Targets(w, h, normal="normal" in wanted, surface_sum="surface" in wanted)
     gpu_meshes = {}
     for inst in scene.instances:
@@ -169,30 +191,30 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=None, pa
     def first_sample():  # depth and normal of the pixel centres, before later samples jitter them
         for name, texture in (("depth", targets.surface_depth), ("normal", targets.normal)):
             if name in wanted:
-                passes[name] = read(texture, w, h)
-        if vector is not None:  # what the line pass reads; later samples overwrite the depth
-            vector.update(depth=read(targets.surface_depth, w, h, 1)[..., 0], view_segments=view_segments,
-                          rounded=bool(settings.highlights and not whiteout and settings.lines is not None
-                                       and "silhouette" in settings.lines.types))
+                read_back[name] = read(texture, w, h)
+        if vector:  # what the line pass reads; later samples overwrite the depth
+            line_depth.append(read(targets.surface_depth, w, h, 1)[..., 0])
 
     stats = draw(scene, camera, settings, targets, gpu_meshes, each_sample, cancelled, view_batches,
-                 first_sample if wanted & {"depth", "normal"} or vector is not None else None)
+                 first_sample if wanted & {"depth", "normal"} or vector else None)
     pixels = read(targets.result, w, h)
-    if vector is not None:  # only the first sample writes ids: still the line pass's
-        vector["ids"] = read(targets.surface_id, w, h, 2)
-    if "ids" in wanted and stats.samples:  # the Object Index pass's ids (drawn when settings.ids)
-        passes["ids"] = read(targets.surface_id, w, h, 2)
+    lines = None
+    if vector and line_depth:  # only the first sample writes ids: still the line pass's
+        lines = LineRecord(line_depth[0], read(targets.surface_id, w, h, 2), view_segments,
+                           bool(settings.highlights and not whiteout and settings.lines is not None
+                                and "silhouette" in settings.lines.types))
+    if "ids" in wanted and stats.samples:  # the index passes' ids (drawn when settings.ids)
+        read_back["ids"] = read(targets.surface_id, w, h, 2)
     scale = stats.samples_requested / stats.samples if 0 < stats.samples < stats.samples_requested else 1.0
     pixels *= scale  # cancelled: rescale what was accumulated
     if "surface" in wanted:
-        passes["surface"] = read(targets.surface_sum, w, h) * scale
+        read_back["surface"] = read(targets.surface_sum, w, h) * scale
     for name, texture in (("highlight", targets.highlight), ("lines", targets.lines)):
         if name in wanted:
-            passes[name] = read(texture, w, h)
-    if keep is not None:
-        keep["surface"] = read(targets.surface_color, w, h)
-        keep["highlight"] = read(targets.highlight, w, h)
-        keep["depth"] = read(targets.surface_depth, w, h)
-        keep["lines"] = read(targets.lines, w, h)
+            read_back[name] = read(texture, w, h)
+    kept = None
+    if keep:
+        kept = {"surface": read(targets.surface_color, w, h), "highlight": read(targets.highlight, w, h),
+                "depth": read(targets.surface_depth, w, h), "lines": read(targets.lines, w, h)}
     unbind_targets()
-    return pixels, stats
+    return FrameResult(pixels, stats, read_back, kept, lines)

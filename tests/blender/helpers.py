@@ -246,7 +246,7 @@ def line_samples(rec, per_px=1, whole_segments=False):
     h, w = rec["lines"].shape[:2]
     settings = a.lines.settings_of(bpy.context.scene.edgelight)
     styles = dict(settings.styles)
-    for matrix, segs, iid in vl.instances_of(rec["scene"], vec["view_segments"]):
+    for matrix, segs, iid in vl.instances_of(rec["scene"], vec.view_segments):
         for kind in settings.types:
             seg = segs.get(kind)
             if seg is None or len(seg) == 0:
@@ -267,7 +267,7 @@ def line_samples(rec, per_px=1, whole_segments=False):
             q = sa[s] + t[:, None] * ab
             z = 1.0 / (1.0 / za[s] + t * (1.0 / zb[s] - 1.0 / za[s]))
             outline = kind in vis.OUTLINE_TYPES
-            shown = vis.visible(q, z, seg.faces[s], iid, outline, vec["depth"], vec["ids"], cam.px_per_unit, True)
-            shown &= ~(vec["rounded"] & vis.past_outline(p, z, seg.faces[s], iid, outline, vec["depth"], vec["ids"],
+            shown = vis.visible(q, z, seg.faces[s], iid, outline, vec.depth, vec.ids, cam.px_per_unit, True)
+            shown &= ~(vec.rounded & vis.past_outline(p, z, seg.faces[s], iid, outline, vec.depth, vec.ids,
                                                           cam.px_per_unit, True))
             yield kind, styles[kind], pix, p, q, shown
