@@ -565,18 +565,31 @@ def window_screenshot(win, name):
     return px, path
 
 
+def settings_when_allowed(scene, values):
+    """Sets (resolution x, y, EdgeLight samples) as soon as Blender allows writing to the scene:
+    while a render job ends (the previous F12's, on a loaded machine) it refuses ("Writing to ID
+    classes in this context is not allowed")."""
+    for _ in range(100):
+        try:
+            scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples = values
+            return
+        except AttributeError:
+            yield 0.2
+    scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples = values  # raises: says why
+
+
 def failed_render(window, area, region):
     """11. An F12 that fails (wider than the GPU's textures): the error shows where the artist is
     looking, not only in the Info editor: the render window's stats line carries it, and the
     status bar shows Blender's red report banner."""
+    import gpu
+
     import edgelight
     scene = bpy.context.scene
-    edgelight.engine.last_render.clear()
-    import gpu
     saved = scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples
     # One pixel wider than this GPU's textures (16384 on llvmpipe, 32768 on others).
-    scene.render.resolution_x = gpu.capabilities.max_texture_size_get() + 1
-    scene.render.resolution_y, scene.edgelight.samples = 64, 1
+    yield from settings_when_allowed(scene, (gpu.capabilities.max_texture_size_get() + 1, 64, 1))
+    edgelight.engine.last_render.clear()
     with bpy.context.temp_override(window=window, area=area, region=region):
         bpy.ops.render.render('INVOKE_DEFAULT')
     for _ in range(60):
@@ -584,7 +597,7 @@ def failed_render(window, area, region):
         if edgelight.engine.last_render and not bpy.app.is_job_running('RENDER'):
             break
     yield 1.0
-    scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples = saved
+    yield from settings_when_allowed(scene, saved)
     errors = [m for level, m in edgelight.engine.last_render.get("messages", []) if level == 'ERROR']
     windows = bpy.context.window_manager.windows
     render_win = next((w for w in windows if any(a.type == 'IMAGE_EDITOR' for a in w.screen.areas) and w != window), None)
