@@ -9,3 +9,12 @@ class EdgeLightPanel:
     @classmethod
     def poll(cls, context):
         return context.engine in cls.COMPAT_ENGINES
+
+
+class EdgeLightMaterialPanel(EdgeLightPanel):
+    """A panel of the Material tab: shown while EdgeLight renders and a material is there."""
+    bl_context = "material"
+
+    @classmethod
+    def poll(cls, context):
+        return super().poll(context) and context.material is not None

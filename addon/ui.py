@@ -5,17 +5,12 @@ import bpy
 from . import color_ramp, compat, material_inputs, ui_light
 from .materials import radius_clamps
 from .materials import unread as unread_of
-from .panel_base import EdgeLightPanel
+from .panel_base import EdgeLightMaterialPanel, EdgeLightPanel
 from .properties import LINE_TYPES
 
 
-class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
+class EDGELIGHT_PT_material(EdgeLightMaterialPanel, bpy.types.Panel):
     bl_label = "EdgeLight"
-    bl_context = "material"
-
-    @classmethod
-    def poll(cls, context):
-        return super().poll(context) and context.material is not None
 
     def draw_header(self, context):
         self.layout.prop(context.material.edgelight, "use_rounding", text="")
@@ -52,16 +47,11 @@ class EDGELIGHT_PT_material(EdgeLightPanel, bpy.types.Panel):
         sub.prop(s, "shininess", text="")
 
 
-class EDGELIGHT_PT_material_surface(EdgeLightPanel, bpy.types.Panel):
+class EDGELIGHT_PT_material_surface(EdgeLightMaterialPanel, bpy.types.Panel):
     """EEVEE's Surface panel (the Principled BSDF's inputs EdgeLight reads), drawn by Blender's own
     code but registered after EdgeLight's: Blender's panel comes first in the tab and fills three
     screens, which put the rounding settings out of sight (compat.SHOWN_PANELS)."""
     bl_label = "Surface"
-    bl_context = "material"
-
-    @classmethod
-    def poll(cls, context):
-        return super().poll(context) and context.material is not None
 
     def draw(self, context):
         bpy.types.EEVEE_MATERIAL_PT_surface.draw(self, context)
@@ -118,14 +108,9 @@ class EDGELIGHT_OT_ramp_single_user(bpy.types.Operator):
         return {'FINISHED'}
 
 
-class EDGELIGHT_PT_material_toon(EdgeLightPanel, bpy.types.Panel):
+class EDGELIGHT_PT_material_toon(EdgeLightMaterialPanel, bpy.types.Panel):
     bl_label = "Toon Shading"
-    bl_context = "material"
     bl_parent_id = "EDGELIGHT_PT_material"
-
-    @classmethod
-    def poll(cls, context):
-        return super().poll(context) and context.material is not None
 
     def draw(self, context):
         s = context.material.edgelight

@@ -1,8 +1,6 @@
 """The world's light on the specular lobe (lighting.glsl's el_env_specular): a metal under a
 uniform world is lit as Cycles lights it, not black, and a dielectric gains the world's
 reflection at its rim (docs/highlight_math.md, "The world's light on the specular lobe")."""
-import os
-import tempfile
 import unittest
 
 import bpy
@@ -10,6 +8,7 @@ import numpy as np
 
 import helpers
 import scene_zoo as zoo
+from test_render_passes import composited
 
 WORLD = (0.5, 0.5, 0.5)
 
@@ -33,23 +32,15 @@ def sphere_scene(metallic, base, roughness):
 
 
 def cycles_pixels(scene, samples=64):
-    """Cycles' linear render of the scene (its pixel filter off, so each pixel is its centre's)."""
+    """Cycles' linear render of the scene (its pixel filter off, so each pixel is its centre's),
+    read back from a 32-bit EXR as test_render_passes reads the compositor's."""
     scene.render.engine = 'CYCLES'
     scene.cycles.samples = samples
     scene.cycles.use_denoising = False
     scene.cycles.filter_width = 0.01
-    s = scene.render.image_settings
-    s.file_format, s.color_depth, s.color_mode = 'OPEN_EXR', '32', 'RGBA'
-    with tempfile.TemporaryDirectory() as tmp:
-        scene.render.filepath = os.path.join(tmp, "cycles.exr")
-        bpy.ops.render.render(write_still=True)
-        img = bpy.data.images.load(scene.render.filepath)
-        w, h = img.size
-        px = np.empty(w * h * 4, np.float32)
-        img.pixels.foreach_get(px)
-        bpy.data.images.remove(img)
+    px = composited(scene, 'RGBA', record=False)[1]
     scene.render.engine = 'EDGELIGHT'
-    return px.reshape(h, w, 4)
+    return px
 
 
 def ring(image, radius_px, centre=(80, 80)):
