@@ -10,7 +10,7 @@ import numpy as np
 
 from . import library_check, platforms
 
-ABI_VERSION = 4
+ABI_VERSION = 5
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -43,6 +43,11 @@ CHAIN_END_FREE = 1 << 2
 LINE_GROUP = 8
 LINE_NODE_FLOATS = 20
 LINE_NODES_CHAIN_SPHERES = 1 << 0
+
+# The outline's records (el_outline_desc; the layout: shaders/outline_layout.json).
+OUTLINE_EDGE_TEXELS = 6
+OUTLINE_CORNER_TEXELS = 5
+OUTLINE_ARC_MAX_PIECES = 8
 
 TABLE_PAPER = 0
 TABLE_WARPED = 1
@@ -122,6 +127,28 @@ class HighlightResult(ctypes.Structure):
                 ("r_max", ctypes.c_float), ("visible_fraction", ctypes.c_float)]
 
 
+class OutlineDesc(ctypes.Structure):
+    _fields_ = [("edges", _f32p), ("edge_vertices", _u32p), ("edge_count", ctypes.c_uint32),
+                ("corners", _f32p), ("corner_vertices", _u32p), ("corner_count", ctypes.c_uint32)]
+
+
+class OutlineView(ctypes.Structure):
+    _fields_ = [("projection", ctypes.c_int32), ("eye", ctypes.c_float * 3), ("view_dir", ctypes.c_float * 3),
+                ("object_to_world", ctypes.c_float * 16), ("world_to_view", ctypes.c_float * 16),
+                ("view_to_clip", ctypes.c_float * 16), ("width", ctypes.c_float), ("height", ctypes.c_float)]
+
+
+# Per instance and view: plain addresses (numpy's .ctypes.data), cheaper than typed pointers.
+class OutlineSegments(ctypes.Structure):
+    _fields_ = [(name, ctypes.c_void_p) for name in ("vertices", "p0", "p1", "n1", "n2", "taper", "faces", "links")] \
+        + [("count", ctypes.c_uint32)]
+
+
+class OutlineOut(ctypes.Structure):
+    _fields_ = [(name, ctypes.c_void_p) for name in ("p0", "p1", "n1", "n2", "taper", "faces", "links")] \
+        + [("capacity", ctypes.c_uint32)]
+
+
 # el_chain_link and el_chain as numpy records (both 12 bytes, no padding).
 CHAIN_LINK = np.dtype([("chain", np.uint32), ("s0", np.float32), ("s1", np.float32)])
 CHAIN = np.dtype([("item_count", np.uint32), ("length", np.float32), ("flags", np.uint32)])
@@ -148,13 +175,17 @@ _SIGNATURES = {
     "el_mesh_chain_edges": [_P, _u32p, ctypes.c_uint32, _P, _P, ctypes.c_uint32, _u32p],
     "el_view_chain_contours": [_P, _P, ctypes.c_uint32, _P, ctypes.c_uint32, _u32p],
     "el_line_nodes": [_f32p, _f32p, _f32p, _P, ctypes.c_uint32, ctypes.c_uint32, _f32p, ctypes.c_uint32, _u32p],
+    "el_outline_create": [ctypes.POINTER(OutlineDesc), ctypes.POINTER(_P)],
+    "el_outline_lines": [_P, ctypes.POINTER(OutlineView), ctypes.POINTER(OutlineSegments), ctypes.POINTER(OutlineOut),
+                         _u32p],
+    "el_fillet_outline": [_f32p, _f32p, _f32p, ctypes.c_uint32, _f32p, _f32p, _u8p],
     "el_highlight_table_create": [ctypes.POINTER(TableDesc), ctypes.POINTER(_P)],
     "el_highlight_table_get_info": [_P, ctypes.POINTER(TableInfo)],
     "el_highlight_table_copy": [_P, _f32p, ctypes.c_uint64],
     "el_highlight_eval_batch": [_P, ctypes.POINTER(HighlightInput), ctypes.c_uint32, ctypes.POINTER(HighlightResult)],
     "el_highlight_reference": [ctypes.POINTER(HighlightInput), ctypes.POINTER(HighlightResult)],
 }
-_DESTROY = ("el_mesh_destroy", "el_view_destroy", "el_highlight_table_destroy")
+_DESTROY = ("el_mesh_destroy", "el_view_destroy", "el_outline_destroy", "el_highlight_table_destroy")
 # Every function the binding calls besides el_abi_version: name -> (argtypes, restype). A library
 # lacking any is refused when loaded.
 _FUNCTIONS = {
@@ -228,6 +259,11 @@ def load(path=None):
 
 def _ptr(array, ctype):
     return array.ctypes.data_as(ctypes.POINTER(ctype)) if array is not None else None
+
+
+def _address(array):
+    """A C-contiguous array's address (None: NULL), for c_void_p fields."""
+    return array.ctypes.data if array is not None else None
 
 
 def _contiguous(array, dtype, columns=None):
@@ -411,6 +447,78 @@ class View(_Handle):
         s = ViewStats()
         self._lib.call("el_view_get_stats", self._h, ctypes.byref(s))
         return {name: getattr(s, name) for name, _ in ViewStats._fields_}
+
+
+def _matrix16(m):
+    return (ctypes.c_float * 16)(*np.asarray(m, np.float64).reshape(16))
+
+
+class Outline(_Handle):
+    """A mesh's convex rounded edges and corner patches (el_outline), from which the library moves
+    each view's silhouettes onto the fillets' outline (el_outline_lines)."""
+    _destroy = "el_outline_destroy"
+
+    def __init__(self, edges, edge_vertices, corners, corner_vertices, lib=None):
+        lib = lib or load()
+        self._edges = _contiguous(edges, np.float32, 4 * OUTLINE_EDGE_TEXELS)
+        self._edge_vertices = _contiguous(edge_vertices, np.uint32, 2)
+        self._corners = _contiguous(corners, np.float32, 4 * OUTLINE_CORNER_TEXELS)
+        self._corner_vertices = _contiguous(corner_vertices, np.uint32)
+        if len(self._edges) != len(self._edge_vertices) or len(self._corners) != len(self._corner_vertices):
+            raise ValueError(f"Outline: {len(self._edges)} edges with {len(self._edge_vertices)} vertex pairs, "
+                             f"{len(self._corners)} corners with {len(self._corner_vertices)} vertices")
+        d = OutlineDesc(_ptr(self._edges, ctypes.c_float), _ptr(self._edge_vertices, ctypes.c_uint32), len(self._edges),
+                        _ptr(self._corners, ctypes.c_float), _ptr(self._corner_vertices, ctypes.c_uint32),
+                        len(self._corners))
+        handle = _P()
+        lib.call("el_outline_create", ctypes.byref(d), ctypes.byref(handle))
+        super().__init__(lib, handle)
+
+    def __len__(self):
+        return len(self._edges)
+
+    def lines(self, vertices, p0, p1, n1, n2, taper, faces, links, matrix, camera):
+        """el_outline_lines: segments along mesh edges (vertices (N, 2): p0's, p1's) seen by
+        `camera` (passes.camera.Camera) through `matrix`, on the rounded outline: a dict of the
+        arrays (p0, p1, n1, n2, taper, faces, links; faces and links None where given None)."""
+        n = len(vertices)
+        keep = [_contiguous(vertices, np.uint32, 2)] + [_contiguous(a, np.float32, 3) for a in (p0, p1, n1, n2)] + \
+            [_contiguous(taper, np.float32, 2), _contiguous(faces, np.float32, 2)]
+        links = np.ascontiguousarray(links, CHAIN_LINK) if links is not None else None
+        if any(a is not None and len(a) != n for a in keep + [links]):
+            raise ValueError(f"Outline.lines: arrays of {[None if a is None else len(a) for a in keep + [links]]} for {n} segments")
+        ins = OutlineSegments(*(_address(a) for a in keep + [links]), n)
+        cap = (2 + OUTLINE_ARC_MAX_PIECES) * n
+        out = {k: np.empty((cap, c), np.float32) for k, c in (("p0", 3), ("p1", 3), ("n1", 3), ("n2", 3), ("taper", 2))}
+        out["faces"] = np.empty((cap, 2), np.float32) if faces is not None else None
+        out["links"] = np.empty(cap, CHAIN_LINK) if links is not None else None
+        o = OutlineOut(*(_address(out[k]) for k in ("p0", "p1", "n1", "n2", "taper", "faces", "links")), cap)
+        v = OutlineView(PERSPECTIVE if not camera.orthographic else ORTHOGRAPHIC)
+        if camera.orthographic:
+            v.view_dir[:] = [float(x) for x in camera.view_dir]
+        else:
+            v.eye[:] = [float(x) for x in camera.eye]
+        v.object_to_world, v.world_to_view = _matrix16(matrix), _matrix16(camera.view)
+        v.view_to_clip = _matrix16(camera.projection)
+        v.width, v.height = float(camera.width), float(camera.height)
+        count = ctypes.c_uint32()
+        self._lib.call("el_outline_lines", self._h, ctypes.byref(v), ctypes.byref(ins), ctypes.byref(o), ctypes.byref(count))
+        return {k: (a[:count.value] if a is not None else None) for k, a in out.items()}
+
+
+def fillet_outline(na, nb, v, lib=None):
+    """el_fillet_outline: (P, C, silhouette) of convex fillets of radius 1 between faces of unit
+    normals na, nb (N, 3) seen along v (unit, towards the eye)."""
+    lib = lib or load()
+    na, nb, v = (_contiguous(a, np.float32, 3) for a in (na, nb, v))
+    n = len(na)
+    if len(nb) != n or len(v) != n:
+        raise ValueError(f"fillet_outline: {n}, {len(nb)} and {len(v)} vectors")
+    p, c = np.empty((n, 3), np.float32), np.empty((n, 3), np.float32)
+    sil = np.empty(n, np.uint8)
+    lib.call("el_fillet_outline", *(_ptr(a, ctypes.c_float) for a in (na, nb, v)), n, _ptr(p, ctypes.c_float),
+             _ptr(c, ctypes.c_float), _ptr(sil, ctypes.c_uint8))
+    return p, c, sil.astype(bool)
 
 
 class HighlightTable(_Handle):

@@ -1,7 +1,8 @@
 """How a rounded edge's radius, in object space as the Bevel modifier's Amount is, scales into
 world units under an object's transform: the numpy side of lighting.glsl's el_radius_scale, for
-the CPU's copies of what the shaders decide (the viewport's edge culling, silhouette lines on the
-rounded outline, their corners' arcs). No bpy: plain-Python tests import it."""
+the CPU's copy of what the shaders decide in the viewport's edge culling (the library has its own
+for silhouettes on the rounded outline: native/src/outline_lines.cpp, held to the numpy reference
+tests/addon/outline_lines_reference.py). No bpy: plain-Python tests import it."""
 import numpy as np
 
 
@@ -22,9 +23,3 @@ def radius_scale(m, na, nb, e):
     out[ok] = 0.5 * (sa + sb)
     return out
 
-
-def ball_scale(m, m1, m2, m3):
-    """Per corner patch, how its ball's radius scales under m (lighting.glsl, el_ball_scale: the
-    mean of its three edges' scales, each between two of its sectors' normals)."""
-    return (radius_scale(m, m1, m2, np.cross(m1, m2)) + radius_scale(m, m2, m3, np.cross(m2, m3))
-            + radius_scale(m, m3, m1, np.cross(m3, m1))) / 3.0

@@ -6,26 +6,33 @@ the nearest of those whose strip reaches into its patch (a quad's other half at 
 the thin facets of a triangulated face along it). No bpy: plain-Python tests import it."""
 import numpy as np
 
+from .passes import shader_specs
+
+# The texture layout: shaders/outline_layout.json (the surface program's EL_OUTLINE_* defines; the
+# edge and corner records are also what the library's el_outline_lines reads).
+_LAYOUT = shader_specs.load("outline_layout.json")["defines"]
 # Per edge: (N1, radius), (N2, 0), (p0, cut at p0), (p1, cut at p1), (turn of N1, concave edge
-# at p0), (turn of N2, concave edge at p1), object space, the normals as the edge pass shades with (edge_choice.EdgeSet: at t
-# along the edge a side's normal is normalize(N + (t - 1/2) turn)); a cut is the fraction of the
-# edge from that end along which a concave fillet meeting it there fills the corner, signed by
-# the face its end arc lies in (_concave_cuts); 1 where a concave edge meets that end, else 0
-# (_concave_ends).
-EDGE_TEXELS = 6
-EDGES_PER_ROW = 1024
+# at p0), (turn of N2, concave edge at p1), object space, the normals as the edge pass shades
+# with (edge_choice.EdgeSet: at t along the edge a side's normal is normalize(N + (t - 1/2)
+# turn)); a cut is the fraction of the edge from that end along which a concave fillet meeting it
+# there fills the corner, signed by the face its end arc lies in (_concave_cuts); 1 where a
+# concave edge meets that end, else 0 (_concave_ends).
+EDGE_TEXELS = _LAYOUT["EL_OUTLINE_EDGE_TEXELS"]
+EDGES_PER_ROW = _LAYOUT["EL_OUTLINE_EDGES_PER_ROW"]
 # Per corner patch (three convex rounded edges meeting): (ball centre, radius), (vertex, 0), and
 # its three sectors' normals (AB, BC, CA; corner_patches.Corners).
-CORNER_TEXELS = 5
-CORNERS_PER_ROW = 1024
-# Per triangle three texels: the numbers of up to EDGES_PER_TRIANGLE edges, four to a texel,
-# then of up to CORNERS_PER_TRIANGLE corners, each plus one (0: none). A sliver of an n-gon's
-# triangulation (a cylinder's 32-sided cap) lies in the reach of five to eight rims' strips.
-EDGES_PER_TRIANGLE = 8
-VERTEX_EDGES = 4  # judged in the vertex shader (varyings); the rest per pixel (EL_OUTLINE_MORE)
-CORNERS_PER_TRIANGLE = 4  # a quad's half lies in the zones of all four of its corners
-TRIANGLE_TEXELS = 3
-TRIANGLES_PER_ROW = 2048
+CORNER_TEXELS = _LAYOUT["EL_OUTLINE_CORNER_TEXELS"]
+CORNERS_PER_ROW = _LAYOUT["EL_OUTLINE_CORNERS_PER_ROW"]
+# Per triangle: the numbers of up to EDGES_PER_TRIANGLE edges, four to a texel, then of up to
+# CORNERS_PER_TRIANGLE corners, each plus one (0: none). A sliver of an n-gon's triangulation (a
+# cylinder's 32-sided cap) lies in the reach of five to eight rims' strips; a quad's half lies in
+# the zones of all four of its corners. The first VERTEX_EDGES are judged in the vertex shader
+# (varyings), the rest per pixel (EL_OUTLINE_MORE).
+EDGES_PER_TRIANGLE = _LAYOUT["EL_OUTLINE_EDGES_PER_TRIANGLE"]
+VERTEX_EDGES = _LAYOUT["EL_OUTLINE_VERTEX_EDGES"]
+CORNERS_PER_TRIANGLE = _LAYOUT["EL_OUTLINE_CORNERS_PER_TRIANGLE"]
+TRIANGLE_TEXELS = _LAYOUT["EL_OUTLINE_TRIANGLE_TEXELS"]
+TRIANGLES_PER_ROW = _LAYOUT["EL_OUTLINE_TRIANGLES_PER_ROW"]
 # A concave edge folded by more than this (degrees) at a strip's end: the silhouette may run on
 # into it (_concave_ends); a triangulated surface's flatter folds are its curvature's noise.
 CONCAVE_END_DEG = 1.0
@@ -44,11 +51,9 @@ def from_edges(extract, name, compute):
 
 
 def layout_defines():
-    """The texture layouts above, as the surface program's defines (shaders/rounded_outline.glsl)."""
-    return {"EL_OUTLINE_EDGE_TEXELS": EDGE_TEXELS, "EL_OUTLINE_EDGES_PER_ROW": EDGES_PER_ROW,
-            "EL_OUTLINE_CORNER_TEXELS": CORNER_TEXELS, "EL_OUTLINE_CORNERS_PER_ROW": CORNERS_PER_ROW,
-            "EL_OUTLINE_TRIANGLE_TEXELS": TRIANGLE_TEXELS, "EL_OUTLINE_TRIANGLES_PER_ROW": TRIANGLES_PER_ROW,
-            "EL_OUTLINE_EDGES_PER_TRIANGLE": EDGES_PER_TRIANGLE}
+    """The texture layout (shaders/outline_layout.json), as the surface program's defines
+    (shaders/rounded_outline.glsl)."""
+    return dict(_LAYOUT)
 
 
 def convex(e):

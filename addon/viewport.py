@@ -260,7 +260,7 @@ class ViewportState:
             self.view_batches = []
             return True
         segments = view_lines.view_line_segments(scene, camera, ls, self.counters, rounded)
-        self.view_batches = [line_pass.line_batches(segs) for segs in segments]
+        self.view_batches = line_pass.view_line_batches(segments)
         self.counters.view_uploads += sum(len(b) for b in self.view_batches)
         return True
 

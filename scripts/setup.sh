@@ -19,7 +19,7 @@ packages=(
   xdotool               # presses Esc in the render window in the viewport session
   clang libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the C API fuzz test (scripts/fuzz.sh)
   clang-format          # style.clang_format (.clang-format; ruff comes from PyPI below)
-  g++-mingw-w64-x86-64-posix wine64 googletest  # the Windows DLL and its tests under wine (native.windows)
+  g++-mingw-w64-x86-64-posix wine wine64 googletest  # the Windows DLL and its tests under wine (native.windows)
   llvm-14               # llvm-objdump, llvm-nm, llvm-lipo: the macOS slices checked (native.macos)
 )
 

@@ -178,7 +178,7 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=False, p
     whiteout = settings.lines is not None and settings.lines.whiteout
     view_segments = view_lines.view_line_segments(scene, camera, settings.lines,
                                                   rounded=settings.highlights and not whiteout)
-    view_batches = [line_pass.line_batches(segs, LINE_CHUNK) for segs in view_segments]
+    view_batches = line_pass.view_line_batches(view_segments, LINE_CHUNK)
     last_preview = [time.monotonic()]
 
     def each_sample(done, total):

@@ -80,14 +80,31 @@ class LineSet:
             raise RuntimeError(f"{len(seg)} line segments of one type in one object; the GPU holds at most "
                                f"{limit * NODES_PER_ROW}")
         records = LineNodes(seg, chain_spheres)
-        size, buf = _rows(records.nodes, NODES_PER_ROW, NODE_TEXELS, 4)
-        self.nodes = compat.texture(size, 'RGBA32F', buf)
-        size, buf = _rows(records.faces, FACES_PER_ROW, 1, 2)
-        self.faces = compat.texture(size, 'RG32F', buf)
-        # Any split works: a chord is drawn from its first segment's record and the textures.
-        n = len(records)
-        step = chunk or max(n, 1)
-        self.batches = [_batch(i, min(i + step, n)) for i in range(0, n, step)]
+        self.nodes, self.faces = _textures(records.nodes, records.faces)
+        self.batches = _batches(0, len(records), chunk)
+
+    @classmethod
+    def shared(cls, nodes, faces, start, stop, chunk=None):
+        """The segments [start, stop) of record and face textures that several sets share."""
+        self = cls.__new__(cls)
+        self.count, self.nodes, self.faces = stop - start, nodes, faces
+        self.batches = _batches(start, stop, chunk)
+        return self
+
+
+def _textures(nodes, faces):
+    """The record and face textures of records (N, NODE_TEXELS, 4) and faces (N, 2)."""
+    size, buf = _rows(nodes, NODES_PER_ROW, NODE_TEXELS, 4)
+    node_texture = compat.texture(size, 'RGBA32F', buf)
+    size, buf = _rows(faces, FACES_PER_ROW, 1, 2)
+    return node_texture, compat.texture(size, 'RG32F', buf)
+
+
+def _batches(start, stop, chunk):
+    """Batches of the segments [start, stop) in chain order, `chunk` at most each. Any split
+    works: a chord is drawn from its first segment's record and the textures."""
+    step = chunk or max(stop - start, 1)
+    return [_batch(i, min(i + step, stop)) for i in range(start, stop, step)]
 
 
 def _batch(start, stop):
@@ -112,6 +129,44 @@ def line_batches(segments, chunk=None):
     for kind, seg in segments.items():
         if len(seg):
             out[kind] = LineSet(seg, chunk, chain_spheres=kind == "crease")
+    return out
+
+
+def view_line_batches(per_instance, chunk=None):
+    """[{type: LineSet}] of the view-dependent sets of each instance ([{type: LineSegments}],
+    lines.view_lines). Each type's sets of all instances share one record texture and one face
+    texture, written by one library call, each instance drawing its own range of them: a scene
+    of many objects uploads two textures a type per frame, not two per object. Sets without
+    chain records, or too many segments for one texture, get textures of their own."""
+    out = [{} for _ in per_instance]
+    kinds = [k for k in dict.fromkeys(k for segs in per_instance for k in segs)]
+    for kind in kinds:
+        parts = [(i, segs[kind]) for i, segs in enumerate(per_instance) if kind in segs and len(segs[kind])]
+        total = sum(len(s) for _, s in parts)
+        rows = -(-total // NODES_PER_ROW)
+        if len(parts) < 2 or any(s.chain_links is None for _, s in parts) \
+                or rows > gpu.capabilities.max_texture_size_get():
+            for i, s in parts:
+                out[i][kind] = LineSet(s, chunk)
+            continue
+        links = np.concatenate([s.chain_links for _, s in parts])
+        # Each instance's chains after the last one's: chain order keeps each instance's
+        # segments together, in instance order.
+        ends = np.cumsum([len(s) for _, s in parts])
+        chains = np.array([int(s.chain_links["chain"].max()) + 1 for _, s in parts], np.int64)
+        links["chain"] += np.repeat(np.cumsum(chains) - chains, [len(s) for _, s in parts]).astype(np.uint32)
+        cat = lambda name: np.concatenate([getattr(s, name) for _, s in parts])  # noqa: E731
+        faces = [s.faces if s.faces is not None else np.zeros((len(s), 2), np.float32) for _, s in parts]
+        nodes, order = native.line_nodes(cat("p0"), cat("p1"), cat("taper"), links, False)
+        part_of = np.repeat(np.arange(len(parts)), [len(s) for _, s in parts])
+        if np.any(np.diff(part_of[order]) < 0):  # chain order that mixed instances: not shared
+            for i, s in parts:
+                out[i][kind] = LineSet(s, chunk)
+            continue
+        nodes_tex, faces_tex = _textures(nodes.reshape(-1, NODE_TEXELS, 4),
+                                         np.ascontiguousarray(np.concatenate(faces).astype(np.float32)[order]))
+        for (i, _), start, stop in zip(parts, ends - [len(s) for _, s in parts], ends):
+            out[i][kind] = LineSet.shared(nodes_tex, faces_tex, int(start), int(stop), chunk)
     return out
 
 

@@ -1,7 +1,5 @@
 """Per instance, the line batches a frame draws: each geometry's static ones and the
 view-dependent silhouettes and contours (native view calls)."""
-import numpy as np
-
 from .. import lines as ink
 from .. import native
 
@@ -34,11 +32,12 @@ def view_line_segments(scene, camera, line_settings, counters=None, rounded=Fals
         try:
             try:
                 out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters, rounded))
-            except (ArithmeticError, IndexError, ValueError, np.linalg.LinAlgError) as e:
+            except (native.NativeError, ArithmeticError, IndexError, ValueError) as e:
                 if not rounded:
                     raise
-                # Moving them onto the rounded outline failed (numpy, outline_lines.py): the
-                # object's silhouettes stay on its sharp edges, and the render goes on.
+                # Moving them onto the rounded outline failed (the library's el_outline_lines, or
+                # the records it is given): the object's silhouettes stay on its sharp edges, and
+                # the render goes on. Should the view itself have failed, the retry says so.
                 _report(scene, f"{inst.mesh.name}: silhouettes left on the sharp edges ({type(e).__name__}: {e})")
                 out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters, False))
         except native.NativeError as e:

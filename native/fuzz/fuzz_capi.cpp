@@ -302,16 +302,75 @@ void fuzz_highlight(FuzzedDataProvider& p) {
     el_highlight_table_destroy(own);
 }
 
+
+// Silhouettes on the rounded outline: records and segments over a few vertices (so that keys
+// meet and corners join), box-like or any float, any camera, exact or short capacities.
+void fuzz_outline(FuzzedDataProvider& p) {
+    const bool wild = p.ConsumeIntegralInRange<int>(0, 3) == 0;
+    auto value = [&] { return wild ? any_float(p) : float(p.ConsumeIntegralInRange<int>(-2, 2)) * 0.5f; };
+    const uint32_t ec = p.ConsumeIntegralInRange<uint32_t>(0, 12), cc = p.ConsumeIntegralInRange<uint32_t>(0, 4);
+    std::vector<float> edges(size_t(ec) * 4 * EL_OUTLINE_EDGE_TEXELS + 1), corners(size_t(cc) * 4 * EL_OUTLINE_CORNER_TEXELS + 1);
+    for (auto& x : edges) x = value();
+    for (auto& x : corners) x = value();
+    std::vector<uint32_t> ev(2 * size_t(ec) + 1), cv(cc + 1);
+    for (auto& x : ev) x = p.ConsumeIntegralInRange<uint32_t>(0, 7);
+    for (auto& x : cv) x = p.ConsumeIntegralInRange<uint32_t>(0, 7);
+    el_outline_desc desc{edges.data(), ev.data(), ec, corners.data(), cv.data(), cc};
+    if (p.ConsumeIntegralInRange<int>(0, 7) == 0) desc.edges = nullptr;
+    if (p.ConsumeIntegralInRange<int>(0, 7) == 0) desc.corner_vertices = nullptr;
+    el_outline* outline = nullptr;
+    el_outline_create(p.ConsumeIntegralInRange<int>(0, 15) ? &desc : nullptr, &outline);
+    el_outline_view view{};
+    view.projection = p.ConsumeIntegralInRange<int32_t>(-1, 2);
+    fill3(p, view.eye);
+    fill3(p, view.view_dir);
+    for (float* m : {view.object_to_world, view.world_to_view, view.view_to_clip}) {
+        const bool identity = p.ConsumeBool();
+        for (int i = 0; i < 16; ++i) m[i] = identity ? (i % 5 == 0 ? 1.0f : 0.0f) : any_float(p);
+    }
+    view.width = p.ConsumeBool() ? 320.0f : any_float(p);
+    view.height = p.ConsumeBool() ? 240.0f : any_float(p);
+    const uint32_t n = p.ConsumeIntegralInRange<uint32_t>(0, 12);
+    std::vector<uint32_t> verts(2 * size_t(n) + 1);
+    for (auto& x : verts) x = p.ConsumeIntegralInRange<uint32_t>(0, 7);
+    std::vector<float> p0(3 * size_t(n) + 1), p1(3 * size_t(n) + 1), n1(3 * size_t(n) + 1), n2(3 * size_t(n) + 1);
+    std::vector<float> taper(2 * size_t(n) + 1), faces(2 * size_t(n) + 1);
+    for (auto* a : {&p0, &p1, &n1, &n2, &taper, &faces})
+        for (auto& x : *a) x = value();
+    std::vector<el_chain_link> links(n + 1);
+    for (auto& l : links) l = el_chain_link{p.ConsumeIntegralInRange<uint32_t>(0, 3), value(), value()};
+    el_outline_segments in{verts.data(), p0.data(), p1.data(), n1.data(), n2.data(), taper.data(),
+                           p.ConsumeBool() ? faces.data() : nullptr, p.ConsumeBool() ? links.data() : nullptr, n};
+    const uint32_t full = (2 + EL_OUTLINE_ARC_MAX_PIECES) * n;
+    const uint32_t cap = p.ConsumeBool() ? full : p.ConsumeIntegralInRange<uint32_t>(0, full);
+    std::vector<float> o3(4 * (3 * size_t(cap) + 1)), o2(2 * (2 * size_t(cap) + 1));
+    std::vector<el_chain_link> olinks(cap + 1);
+    el_outline_out out{&o3[0], &o3[3 * size_t(cap) + 1], &o3[2 * (3 * size_t(cap) + 1)], &o3[3 * (3 * size_t(cap) + 1)],
+                       &o2[0], p.ConsumeIntegralInRange<int>(0, 7) ? &o2[2 * size_t(cap) + 1] : nullptr,
+                       p.ConsumeIntegralInRange<int>(0, 7) ? olinks.data() : nullptr, cap};
+    uint32_t count = 0;
+    el_outline_lines(outline, p.ConsumeIntegralInRange<int>(0, 15) ? &view : nullptr, &in, &out, &count);
+    el_outline_lines(outline, &view, &in, &out, nullptr);
+    std::vector<uint8_t> sil(n + 1);
+    std::vector<float> c(3 * size_t(n) + 1);
+    el_fillet_outline(n1.data(), n2.data(), p0.data(), n, p1.data(), c.data(), sil.data());
+    el_outline_destroy(outline);
+}
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     FuzzedDataProvider p(data, size);
     el_abi_version();
     el_status_name(el_status(p.ConsumeIntegralInRange<int>(0, 15)));  // any value an enum of 0..9 may hold
-    if (p.ConsumeBool()) fuzz_mesh(p); else fuzz_highlight(p);
+    switch (p.ConsumeIntegralInRange<int>(0, 2)) {
+    case 0: fuzz_mesh(p); break;
+    case 1: fuzz_highlight(p); break;
+    default: fuzz_outline(p); break;
+    }
     el_last_error();
     el_mesh_destroy(nullptr);
     el_view_destroy(nullptr);
+    el_outline_destroy(nullptr);
     el_highlight_table_destroy(nullptr);
     return 0;
 }

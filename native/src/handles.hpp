@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mesh_data.hpp"
+#include "outline_lines.hpp"
 #include "view_cache.hpp"
 
 #include <memory>
@@ -13,4 +14,8 @@ struct el_mesh {
 
 struct el_view {
     el::ViewCache cache;
+};
+
+struct el_outline {
+    el::OutlineRecords records;
 };

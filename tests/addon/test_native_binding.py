@@ -63,6 +63,15 @@ class HeaderAgreement(unittest.TestCase):
             with self.subTest(constant=name):
                 self.assertEqual(getattr(native, name[len("EL_"):], None), value)
 
+    def test_the_outline_records_are_shaders_outline_layout_json(self):
+        """The edge and corner records el_outline_lines reads are the surface program's outline
+        texels: the header's counts are the layout's (shaders/outline_layout.json)."""
+        layout = addon_module("passes.shader_specs").load("outline_layout.json")["defines"]
+        constants = header()["constants"]
+        for name in ("EL_OUTLINE_EDGE_TEXELS", "EL_OUTLINE_CORNER_TEXELS"):
+            with self.subTest(constant=name):
+                self.assertEqual(constants[name], layout[name])
+
 
 class Library(unittest.TestCase):
     @classmethod

@@ -169,6 +169,41 @@ class Instances(unittest.TestCase):
         self.assertTrue(self.covered_at(rec, [(-0.6, 1.55, -0.5)]).all(), "the edited copy is its own")
         self.assertFalse(self.covered_at(rec, [(1.4, 1.55, -0.5)]).any(), "the painted copy is not edited")
 
+    def test_many_objects_share_their_view_lines_textures(self):
+        """Six separate boxes, their silhouettes on the rounded outline: each type's view lines
+        of all six are one record texture and one face texture (line_pass.view_line_batches),
+        each box drawing its own range, and the ink is what six textures of their own draw."""
+        import importlib
+        line_pass = importlib.import_module(helpers.MODULE + ".passes.line_pass")
+        helpers.add_camera((3.0, -6.0, 5.0), lens=35.0)
+        for i in range(6):
+            zoo.box(f"Box{i}", 1.0, location=((i % 3) * 1.8 - 1.8, (i // 3) * 1.8 - 0.9, 0.0))
+        helpers.only_lines(bpy.context.scene, silhouette=3.0, crease=1.5)
+        shared = line_pass.view_line_batches
+        made = []
+
+        def recording(per_instance, chunk=None):
+            made.append(shared(per_instance, chunk))
+            return made[-1]
+
+        def separate(per_instance, chunk=None):
+            return [line_pass.line_batches(segs, chunk) for segs in per_instance]
+        try:
+            line_pass.view_line_batches = recording
+            ours = helpers.render()
+            line_pass.view_line_batches = separate
+            theirs = helpers.render()
+        finally:
+            line_pass.view_line_batches = shared
+        sets = [s["silhouette"] for s in made[0] if "silhouette" in s]
+        self.assertEqual(len(sets), 6)
+        self.assertEqual(len({id(s.nodes) for s in sets}), 1, "one record texture")
+        self.assertEqual(len({id(s.faces) for s in sets}), 1, "one face texture")
+        self.assertGreater(sum(s.count for s in sets), 6 * 4, "arcs on the rounded outline, in each box's range")
+        ink = ours["lines"][..., 3]
+        self.assertGreater(int((ink > 0.5).sum()), 2000)
+        np.testing.assert_array_equal(ink, theirs["lines"][..., 3])
+
     def test_objects_not_drawn_are_reported_in_one_line(self):
         zoo.box("Block")
         smoke = bpy.data.objects.new("Smoke", bpy.data.volumes.new("Smoke"))

@@ -190,16 +190,18 @@ class SilhouetteLines(unittest.TestCase):
             self.assertLess(float(off.max()), 0.3, made)
 
     def test_a_failed_move_leaves_the_objects_silhouettes_sharp_and_says_so(self):
-        """Should moving an object's silhouettes fail (numpy, outline_lines.py), the render goes
-        on: that object's silhouettes stay on its sharp edges, and a report names it."""
+        """Should moving an object's silhouettes fail (the library refusing el_outline_lines),
+        the render goes on: that object's silhouettes stay on its sharp edges, and a report names
+        it."""
         outline_lines = importlib.import_module(helpers.MODULE + ".outline_lines")
+        native = importlib.import_module(helpers.MODULE + ".native")
         ref = box(8.0, "fillets")[..., 3]
         rows = np.arange(94, 150, 4)
         outline = sides(ref, rows)
         box(8.0, "lines")
 
         def fails(*args, **kwargs):
-            raise ValueError("a broken move")
+            raise native.NativeError("EL_ERR_INTERNAL", "a broken move")
         move, outline_lines.on_rounded_outline = outline_lines.on_rounded_outline, fails
         try:
             rec = helpers.render()

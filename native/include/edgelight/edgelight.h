@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 4u
+#define EL_ABI_VERSION 5u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -300,6 +300,91 @@ EL_API el_status el_view_chain_contours(const el_view* view, el_chain_link* out_
                                         uint32_t capacity_links, el_chain* out_chains,
                                         uint32_t capacity_chains, uint32_t* out_chain_count);
 EL_API el_status el_view_get_stats(const el_view* view, el_view_stats* out_stats);
+
+/* ------------------------------------------------------------------------------------------ */
+/* Silhouettes on the rounded outline (docs/lines.md, "Silhouettes of rounded edges")           */
+/* ------------------------------------------------------------------------------------------ */
+
+/* A mesh's convex rounded edges and corner patches, as the surface pass's outline textures hold
+ * them (shaders/outline_layout.json is the one description; a test pins these to it). An edge
+ * record is EL_OUTLINE_EDGE_TEXELS vec4s, object space:
+ *   (N1, radius), (N2, 0), (p0, cut at p0), (p1, cut at p1), (turn of N1, -), (turn of N2, -)
+ * at t along the edge a side's normal is normalize(N + (t - 1/2) turn); a cut is nonzero where a
+ * concave fillet fills the corner at that end (the end does not move); "-" is not read here (the
+ * surface pass's concave-end flags). A corner record is
+ * EL_OUTLINE_CORNER_TEXELS vec4s: (ball centre, radius), (vertex position, 0), and the three
+ * sectors' normals. */
+#define EL_OUTLINE_EDGE_TEXELS 6u
+#define EL_OUTLINE_CORNER_TEXELS 5u
+/* A corner's arc is cut into at most this many chords (el_outline_lines). */
+#define EL_OUTLINE_ARC_MAX_PIECES 8u
+
+typedef struct el_outline el_outline;
+
+typedef struct el_outline_desc {
+    const float* edges;              /* edge_count records of 4 * EL_OUTLINE_EDGE_TEXELS floats */
+    const uint32_t* edge_vertices;   /* 2 per edge record: the mesh vertices of its p0 and p1 */
+    uint32_t edge_count;
+    const float* corners;            /* corner_count records of 4 * EL_OUTLINE_CORNER_TEXELS floats */
+    const uint32_t* corner_vertices; /* 1 per corner record: the mesh vertex it rounds */
+    uint32_t corner_count;
+} el_outline_desc;
+
+/* The camera an instance is seen with: its transform and the frame's camera, world space. */
+typedef struct el_outline_view {
+    int32_t projection;        /* el_projection */
+    float eye[3];              /* perspective */
+    float view_dir[3];         /* orthographic: the direction the camera looks along */
+    float object_to_world[16]; /* row-major, column vectors (el_camera's layout) */
+    float world_to_view[16];
+    float view_to_clip[16];
+    float width;               /* the image, pixels */
+    float height;
+} el_outline_view;
+
+/* Line segments of one type, object space, with what the line pass draws them with. Input:
+ * count segments; vertices[2 i], [2 i + 1] the mesh vertices of segment i's p0 and p1. faces and
+ * links are optional (NULL), taken and given together in and out. */
+typedef struct el_outline_segments {
+    const uint32_t* vertices;
+    const float* p0;              /* 3 per segment */
+    const float* p1;
+    const float* n1;              /* 3 per segment: the faces' normals */
+    const float* n2;
+    const float* taper;           /* 2 per segment: at p0, at p1 */
+    const float* faces;           /* 2 per segment: the surface ids of its faces */
+    const el_chain_link* links;   /* its chain and arc lengths */
+    uint32_t count;
+} el_outline_segments;
+
+typedef struct el_outline_out {
+    float* p0;                    /* 3 per segment */
+    float* p1;
+    float* n1;
+    float* n2;
+    float* taper;                 /* 2 per segment */
+    float* faces;                 /* 2 per segment; required where the input has faces */
+    el_chain_link* links;         /* required where the input has links */
+    uint32_t capacity;            /* segments; (2 + EL_OUTLINE_ARC_MAX_PIECES) * count always suffices */
+} el_outline_out;
+
+EL_API el_status el_outline_create(const el_outline_desc* desc, el_outline** out_outline);
+EL_API void el_outline_destroy(el_outline* outline);
+/* The silhouette segments `in` (along mesh edges) with those on convex rounded edges moved onto
+ * their fillets' outline as `view` sees them, their corners joined (where a corner patch's ball
+ * rounds them, on its circle, with an arc of it appended in chords), and an unmoved silhouette
+ * they run on into ending at the fillet's foot, joined to them by an appended segment. Writes
+ * the first in->count segments in input order, then the appended ones; *out_count is the total
+ * (also on EL_ERR_BUFFER_TOO_SMALL, so the caller can retry). */
+EL_API el_status el_outline_lines(const el_outline* outline, const el_outline_view* view,
+                                  const el_outline_segments* in, el_outline_out* out, uint32_t* out_count);
+/* The fillet's outline point (rounded_outline.glsl's el_fillet_outline), for count convex fillets
+ * of radius 1 between faces of unit normals na, nb seen along v (unit, towards the eye): out_p
+ * the unit direction from the axis to the outline point, turned towards the sharp edge (0 where
+ * no silhouette), out_c where the sharp edge lies from the axis, out_silhouette 1 where one face
+ * faces the eye and the other does not. 3 floats per vector. */
+EL_API el_status el_fillet_outline(const float* na, const float* nb, const float* v, uint32_t count,
+                                   float* out_p, float* out_c, uint8_t* out_silhouette);
 
 /* ------------------------------------------------------------------------------------------ */
 /* Highlight math (docs/highlight_math.md)                                                      */

@@ -1,0 +1,151 @@
+// C entry points for silhouettes on the rounded outline (outline_lines.hpp).
+#include "capi_common.hpp"
+#include "handles.hpp"
+#include "outline_lines.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+using el::guarded;
+using el::require;
+using el::require_capacity;
+
+namespace {
+
+void require_finite_array(const float* a, size_t count, const char* name) {
+    for (size_t i = 0; i < count; ++i)
+        if (!std::isfinite(a[i])) el::fail(EL_ERR_NON_FINITE, std::string(name) + "[" + std::to_string(i) + "] is not finite");
+}
+
+el::Mat4 matrix(const float* m, const char* name) {
+    require_finite_array(m, 16, name);
+    el::Mat4 r{};
+    std::copy(m, m + 16, r.m);
+    return r;
+}
+
+el::OutlineCamera camera_of(const el_outline_view& v) {
+    el::OutlineCamera c;
+    if (v.projection != EL_PERSPECTIVE && v.projection != EL_ORTHOGRAPHIC)
+        el::fail(EL_ERR_INVALID_ARGUMENT, "view->projection " + std::to_string(v.projection) + " is no el_projection");
+    c.orthographic = v.projection == EL_ORTHOGRAPHIC;
+    el::require_finite3(v.eye, "view->eye");
+    el::require_finite3(v.view_dir, "view->view_dir");
+    c.eye = glm::dvec3(v.eye[0], v.eye[1], v.eye[2]);
+    c.view_dir = glm::dvec3(v.view_dir[0], v.view_dir[1], v.view_dir[2]);
+    if (c.orthographic && !(glm::length(c.view_dir) > 0.0))
+        el::fail(EL_ERR_INVALID_ARGUMENT, "view->view_dir is zero in an orthographic view");
+    c.object_to_world = matrix(v.object_to_world, "view->object_to_world");
+    c.world_to_view = matrix(v.world_to_view, "view->world_to_view");
+    c.view_to_clip = matrix(v.view_to_clip, "view->view_to_clip");
+    el::require_finite(v.width, "view->width");
+    el::require_finite(v.height, "view->height");
+    if (!(v.width > 0.0f && v.height > 0.0f)) el::fail(EL_ERR_INVALID_ARGUMENT, "view->width and height must be positive");
+    c.width = v.width;
+    c.height = v.height;
+    return c;
+}
+
+}  // namespace
+
+extern "C" {
+
+EL_API el_status el_outline_create(const el_outline_desc* desc, el_outline** out_outline) {
+    if (out_outline) *out_outline = nullptr;
+    return guarded("el_outline_create", [&] {
+        require(desc, "desc");
+        require(out_outline, "out_outline");
+        if (desc->edge_count) {
+            require(desc->edges, "desc->edges");
+            require(desc->edge_vertices, "desc->edge_vertices");
+            require_finite_array(desc->edges, size_t(desc->edge_count) * 4 * EL_OUTLINE_EDGE_TEXELS, "desc->edges");
+        }
+        if (desc->corner_count) {
+            require(desc->corners, "desc->corners");
+            require(desc->corner_vertices, "desc->corner_vertices");
+            require_finite_array(desc->corners, size_t(desc->corner_count) * 4 * EL_OUTLINE_CORNER_TEXELS, "desc->corners");
+        }
+        auto o = std::make_unique<el_outline>();
+        o->records = el::make_outline_records(*desc);
+        *out_outline = o.release();
+    });
+}
+
+EL_API void el_outline_destroy(el_outline* outline) { delete outline; }
+
+EL_API el_status el_outline_lines(const el_outline* outline, const el_outline_view* view, const el_outline_segments* in,
+                                  el_outline_out* out, uint32_t* out_count) {
+    if (out_count) *out_count = 0;
+    return guarded("el_outline_lines", [&] {
+        require(outline, "outline");
+        require(view, "view");
+        require(in, "in");
+        require(out, "out");
+        require(out_count, "out_count");
+        const el::OutlineCamera camera = camera_of(*view);
+        const size_t n = in->count;
+        el::OutlineSegments seg;
+        seg.has_faces = in->faces != nullptr;
+        seg.has_links = in->links != nullptr;
+        if (n) {
+            require(in->vertices, "in->vertices");
+            require(in->p0, "in->p0");
+            require(in->p1, "in->p1");
+            require(in->n1, "in->n1");
+            require(in->n2, "in->n2");
+            require(in->taper, "in->taper");
+            require_finite_array(in->p0, 3 * n, "in->p0");
+            require_finite_array(in->p1, 3 * n, "in->p1");
+            require_finite_array(in->n1, 3 * n, "in->n1");
+            require_finite_array(in->n2, 3 * n, "in->n2");
+            seg.p0.assign(in->p0, in->p0 + 3 * n);
+            seg.p1.assign(in->p1, in->p1 + 3 * n);
+            seg.n1.assign(in->n1, in->n1 + 3 * n);
+            seg.n2.assign(in->n2, in->n2 + 3 * n);
+            seg.taper.assign(in->taper, in->taper + 2 * n);
+            if (seg.has_faces) seg.faces.assign(in->faces, in->faces + 2 * n);
+            if (seg.has_links) seg.links.assign(in->links, in->links + n);
+        }
+        const el::OutlineSegments res = n ? el::outline_lines(outline->records, camera, in->vertices, std::move(seg)) : seg;
+        const size_t m = res.size();
+        *out_count = uint32_t(m);
+        require_capacity(out->capacity, m, "out->capacity");
+        if (m == 0) return;
+        for (auto [p, name] : {std::pair{out->p0, "out->p0"}, {out->p1, "out->p1"}, {out->n1, "out->n1"},
+                               {out->n2, "out->n2"}, {out->taper, "out->taper"}})
+            require(p, name);
+        if (res.has_faces) require(out->faces, "out->faces");
+        if (res.has_links) require(out->links, "out->links");
+        std::copy(res.p0.begin(), res.p0.end(), out->p0);
+        std::copy(res.p1.begin(), res.p1.end(), out->p1);
+        std::copy(res.n1.begin(), res.n1.end(), out->n1);
+        std::copy(res.n2.begin(), res.n2.end(), out->n2);
+        std::copy(res.taper.begin(), res.taper.end(), out->taper);
+        if (res.has_faces) std::copy(res.faces.begin(), res.faces.end(), out->faces);
+        if (res.has_links) std::copy(res.links.begin(), res.links.end(), out->links);
+    });
+}
+
+EL_API el_status el_fillet_outline(const float* na, const float* nb, const float* v, uint32_t count, float* out_p,
+                                   float* out_c, uint8_t* out_silhouette) {
+    return guarded("el_fillet_outline", [&] {
+        if (count == 0) return;
+        for (auto [p, name] : {std::pair{na, "na"}, {nb, "nb"}, {v, "v"}}) require(p, name);
+        require(out_p, "out_p");
+        require(out_c, "out_c");
+        require(out_silhouette, "out_silhouette");
+        for (uint32_t i = 0; i < count; ++i) {
+            const size_t k = 3 * size_t(i);
+            const auto f = el::fillet_outline(glm::dvec3(na[k], na[k + 1], na[k + 2]), glm::dvec3(nb[k], nb[k + 1], nb[k + 2]),
+                                              glm::dvec3(v[k], v[k + 1], v[k + 2]));
+            for (int j = 0; j < 3; ++j) {
+                out_p[k + size_t(j)] = float(f.p[j]);
+                out_c[k + size_t(j)] = float(f.c[j]);
+            }
+            out_silhouette[i] = f.silhouette ? 1 : 0;
+        }
+    });
+}
+
+}  // extern "C"
