@@ -112,8 +112,7 @@ EL_API el_status el_outline_lines(const el_outline* outline, const el_outline_vi
         *out_count = uint32_t(m);
         require_capacity(out->capacity, m, "out->capacity");
         if (m == 0) return;
-        for (auto [p, name] : {std::pair{out->p0, "out->p0"}, {out->p1, "out->p1"}, {out->n1, "out->n1"},
-                               {out->n2, "out->n2"}, {out->taper, "out->taper"}})
+        for (auto [p, name] : {std::pair{out->p0, "out->p0"}, {out->p1, "out->p1"}, {out->n1, "out->n1"}, {out->n2, "out->n2"}, {out->taper, "out->taper"}})
             require(p, name);
         if (res.has_faces) require(out->faces, "out->faces");
         if (res.has_links) require(out->links, "out->links");

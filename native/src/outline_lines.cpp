@@ -217,8 +217,8 @@ std::vector<std::array<size_t, 2>> two_ends(const std::vector<uint32_t>& verts) 
 }
 
 struct Arc {
-    size_t pair;                                // into the moved segments' end pairs
-    dvec3 t1, t2;                               // object space, the two ends on the circle
+    size_t pair;   // into the moved segments' end pairs
+    dvec3 t1, t2;  // object space, the two ends on the circle
     std::array<dvec3, kArcMaxPieces + 1> points;
     int pieces;
 };
@@ -264,8 +264,7 @@ namespace {
 class Outliner {
 public:
     Outliner(const OutlineRecords& records, const OutlineCamera& camera)
-        : rec_(records), cam_(camera), lin_(linear(camera.object_to_world)), shift_(translation(camera.object_to_world)),
-          scale_(lin_), invertible_(std::abs(lin_.det()) > 1e-30) {
+        : rec_(records), cam_(camera), lin_(linear(camera.object_to_world)), shift_(translation(camera.object_to_world)), scale_(lin_), invertible_(std::abs(lin_.det()) > 1e-30) {
         if (invertible_) inv_ = lin_.inverse();
         world_clip_ = product(cam_.view_to_clip, cam_.world_to_view);
         clip_ = product(world_clip_, cam_.object_to_world);

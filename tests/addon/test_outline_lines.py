@@ -11,12 +11,11 @@ import unittest
 
 import numpy as np
 
+import outline_lines_reference as reference
 from addon_modules import addon_module
 from small_meshes import box as small_box
 from small_meshes import edge_frame
 from test_rounded_outline import extract_of
-
-import outline_lines_reference as reference
 
 native = addon_module("native")
 outline_lines = addon_module("outline_lines")

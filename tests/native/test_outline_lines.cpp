@@ -82,7 +82,7 @@ TEST(OutlineLines, MovesTheRoundedEdgeAndJoinsTheOtherAtTheFoot) {
     ASSERT_EQ(count, 3u);
     EXPECT_NEAR(f.o_p0[3 + 2], -0.1f, 1e-6);
     EXPECT_FLOAT_EQ(f.o_p1[3 + 2], -1.0f);
-    EXPECT_NEAR(f.o_p1[6 + 2], -0.1f, 1e-6);   // the joint runs foot -> tip, as the chain leaves the vertex
+    EXPECT_NEAR(f.o_p1[6 + 2], -0.1f, 1e-6);  // the joint runs foot -> tip, as the chain leaves the vertex
     EXPECT_NEAR(f.o_p0[6 + 2], -0.04f, 1e-6);
     EXPECT_EQ(f.o_faces[4], 1.0f);
     EXPECT_EQ(f.o_n2[6 + 1], -1.0f);
