@@ -39,8 +39,13 @@ def hidden_back_faces(box, matrix, clip_matrix):
     """Whether an instance's back faces are hidden (to be culled): its bounding box (object
     space) under `matrix` lies wholly in front of the camera's near plane (clip_matrix: the
     camera's projection times its view), so the eye, and the near plane that would cut the
-    surface open, lie outside the solid."""
-    lo, hi = box
-    corners = np.array([[x, y, z, 1.0] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
-    clip = corners @ (np.asarray(clip_matrix, np.float64) @ np.asarray(matrix, np.float64)).T
-    return bool(np.all(clip[:, 2] > -clip[:, 3] + 1e-6 * np.abs(clip[:, 3])) and np.all(clip[:, 3] > 0.0))
+    surface open, lie outside the solid. Boxes (..., 2, 3) and matrices (..., 4, 4) stacked:
+    one answer per instance, all at once."""
+    box = np.asarray(box, np.float64)
+    pick = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], bool)  # (8, 3): hi where set
+    corners = np.where(pick, box[..., 1:2, :], box[..., 0:1, :])                          # (..., 8, 3)
+    corners = np.concatenate([corners, np.ones(corners.shape[:-1] + (1,))], axis=-1)
+    full = np.asarray(clip_matrix, np.float64) @ np.asarray(matrix, np.float64)
+    clip = np.einsum("...ck,...jk->...cj", corners, full)
+    front = (clip[..., 2] > -clip[..., 3] + 1e-6 * np.abs(clip[..., 3])) & (clip[..., 3] > 0.0)
+    return np.all(front, axis=-1)

@@ -20,7 +20,7 @@ DEBUG_COLORS = {
     "wire": (0.1, 0.3, 1.0),
 }
 _MARK_BITS = {"FREESTYLE": native.MARK_FREESTYLE, "SHARP": native.MARK_SHARP, "SEAM": native.MARK_SEAM}
-NO_TAPER = 1.0e9  # taper parameter of an end with no free end on its chain
+NO_TAPER = native.NO_TAPER  # taper parameter of an end with no free end on its chain (EL_NO_TAPER)
 
 
 @dataclass(frozen=True)
@@ -172,48 +172,63 @@ def static_lines(edge_data, mesh, settings):
     return out
 
 
-def view_lines(extract, index, matrix, camera, settings, counters=None, rounded=False):
-    """Silhouettes and smooth contours of instance `index` of `extract` seen from `camera`:
-    type -> LineSegments. One native view update per instance; chains only where tapered. With
-    `rounded` (the edge pass draws the bands, and the surface pass the fillets' outline), a
-    silhouette along a convex rounded edge lies on its fillet's outline (outline_lines.py)."""
-    kinds = [k for k in settings.types if k in VIEW_TYPES] if settings else []
-    if not kinds:
-        return {}
-    # One native view per instance (each sees the camera from its own object space), kept so an
-    # unchanged view costs the library a comparison.
+def edge_faces(extract):
+    """(E, 2) float32: the surface ids of each mesh edge's first two faces, what a line segment
+    along it carries (surface_ids), made once per extraction."""
+    derived = getattr(extract, "derived", None)
+    if derived is not None and "edge faces" in derived:
+        return derived["edge faces"]
+    d = extract.edge_data
+    out = surface_ids(d, np.stack([d.face_a, d.face_b], axis=1))
+    if derived is not None:
+        derived["edge faces"] = out
+    return out
+
+
+def silhouettes(extract, matrices, camera, taper, rounded):
+    """Per instance of `extract` (its transforms `matrices`, (N, 4, 4)) seen from `camera`, its
+    silhouettes as LineSegments (chained; tapered with `taper`), or, where its view failed (a
+    singular transform, say), the library's message. One library call serves all of them
+    (el_view_lines, instances in parallel). With `rounded` (the edge pass draws the bands, and the
+    surface pass the fillets' outline), those along convex rounded edges lie on their fillets'
+    outline (outline_lines.py)."""
+    outline = outline_lines.outline_of(extract) if rounded and extract.edges else None
+    offsets, failed, a = native.view_lines(extract.native, native.outline_views(matrices, camera),
+                                           outline if outline is not None and len(outline) else None,
+                                           edge_faces(extract), taper)
+    out = []
+    for i in range(len(offsets) - 1):
+        if i in failed:
+            out.append(failed[i])
+            continue
+        at = slice(int(offsets[i]), int(offsets[i + 1]))
+        out.append(LineSegments(a["p0"][at], a["p1"][at], a["n1"][at], a["n2"][at], a["taper"][at],
+                                a["faces"][at], a["links"][at]))
+    return out
+
+
+def contours(extract, index, matrix, camera, settings):
+    """Smooth contours of instance `index` of `extract` seen from `camera`: LineSegments. One
+    native view per instance (each sees the camera from its own object space), kept so an
+    unchanged view costs the library a comparison."""
     views = extract.views.get(index)
     if views is None:
         views = extract.views[index] = native.View(extract.native)
     cam = native.make_camera(object_to_world=matrix, eye=None if camera.orthographic else camera.eye,
                              view_dir=camera.view_dir if camera.orthographic else None)
-    what = (native.VIEW_SILHOUETTES if "silhouette" in kinds else 0) | (native.VIEW_CONTOURS if "contour" in kinds else 0)
-    views.update(cam, what)
-    if counters is not None:
-        counters.view_calls += 1
-    out = {}
+    views.update(cam, native.VIEW_CONTOURS)
     d = extract.edge_data
-    if "silhouette" in kinds:
-        edges = views.silhouettes()
-        selected = np.zeros(len(d.flags), bool)
-        selected[edges] = True
-        seg = _edge_segments(d, extract.native, selected, settings.style("silhouette").taper > 0.0)
-        if rounded and extract.edges:
-            seg = outline_lines.on_rounded_outline(extract, d.edges[np.flatnonzero(selected)], seg, matrix, camera)
-        out["silhouette"] = seg
-    if "contour" in kinds:
-        pts, tris = views.contours()
-        # Not across flat-shaded faces: their shading has no contour (the library interpolates
-        # vertex normals everywhere).
-        smooth = getattr(extract, "smooth_faces", None)
-        keep = smooth[tris] if smooth is not None and len(tris) else np.ones(len(tris), bool)
-        fn = extract.face_normals()[tris] if len(tris) else np.zeros((0, 3), np.float32)
-        links, chains = views.contour_chains() if len(tris) else (np.zeros(0, native.CHAIN_LINK), None)
-        if settings.style("contour").taper > 0.0 and len(tris):
-            t = taper_params(links, chains)
-        else:
-            t = np.full((len(tris), 2), NO_TAPER, np.float32)
-        faces = np.stack([tris, tris], axis=1) if len(tris) else np.zeros((0, 2), np.int64)
-        out["contour"] = LineSegments(np.ascontiguousarray(pts[keep, 0]), np.ascontiguousarray(pts[keep, 1]),
-                                      fn[keep], fn[keep], t[keep], surface_ids(d, faces[keep]), links[keep])
-    return out
+    pts, tris = views.contours()
+    # Not across flat-shaded faces: their shading has no contour (the library interpolates
+    # vertex normals everywhere).
+    smooth = getattr(extract, "smooth_faces", None)
+    keep = smooth[tris] if smooth is not None and len(tris) else np.ones(len(tris), bool)
+    fn = extract.face_normals()[tris] if len(tris) else np.zeros((0, 3), np.float32)
+    links, chains = views.contour_chains() if len(tris) else (np.zeros(0, native.CHAIN_LINK), None)
+    if settings.style("contour").taper > 0.0 and len(tris):
+        t = taper_params(links, chains)
+    else:
+        t = np.full((len(tris), 2), NO_TAPER, np.float32)
+    faces = np.stack([tris, tris], axis=1) if len(tris) else np.zeros((0, 2), np.int64)
+    return LineSegments(np.ascontiguousarray(pts[keep, 0]), np.ascontiguousarray(pts[keep, 1]),
+                        fn[keep], fn[keep], t[keep], surface_ids(d, faces[keep]), links[keep])

@@ -10,7 +10,7 @@ import numpy as np
 
 from . import library_check, platforms
 
-ABI_VERSION = 5
+ABI_VERSION = 6
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -48,6 +48,9 @@ LINE_NODES_CHAIN_SPHERES = 1 << 0
 OUTLINE_EDGE_TEXELS = 6
 OUTLINE_CORNER_TEXELS = 5
 OUTLINE_ARC_MAX_PIECES = 8
+# View lines of many instances (el_view_lines_desc).
+NO_TAPER = 1.0e9  # the taper value of an end with no free end on its chain
+VIEW_LINES_TAPER = 1 << 0
 
 TABLE_PAPER = 0
 TABLE_WARPED = 1
@@ -138,6 +141,18 @@ class OutlineView(ctypes.Structure):
                 ("view_to_clip", ctypes.c_float * 16), ("width", ctypes.c_float), ("height", ctypes.c_float)]
 
 
+class ViewLinesDesc(ctypes.Structure):
+    _fields_ = [(name, ctypes.c_void_p) for name in ("mesh", "outline", "edge_faces", "views")] \
+        + [("view_count", ctypes.c_uint32), ("flags", ctypes.c_uint32)]
+
+
+# el_outline_view as a numpy record, for many instances' views at once (pinned to OutlineView
+# by tests/addon/test_native_binding.py).
+OUTLINE_VIEW = np.dtype([("projection", np.int32), ("eye", np.float32, 3), ("view_dir", np.float32, 3),
+                         ("object_to_world", np.float32, 16), ("world_to_view", np.float32, 16),
+                         ("view_to_clip", np.float32, 16), ("width", np.float32), ("height", np.float32)])
+
+
 # Per instance and view: plain addresses (numpy's .ctypes.data), cheaper than typed pointers.
 class OutlineSegments(ctypes.Structure):
     _fields_ = [(name, ctypes.c_void_p) for name in ("vertices", "p0", "p1", "n1", "n2", "taper", "faces", "links")] \
@@ -178,6 +193,10 @@ _SIGNATURES = {
     "el_outline_create": [ctypes.POINTER(OutlineDesc), ctypes.POINTER(_P)],
     "el_outline_lines": [_P, ctypes.POINTER(OutlineView), ctypes.POINTER(OutlineSegments), ctypes.POINTER(OutlineOut),
                          _u32p],
+    "el_view_lines_create": [ctypes.POINTER(ViewLinesDesc), ctypes.POINTER(_P)],
+    "el_view_lines_get_offsets": [_P, _u32p, ctypes.c_uint32, ctypes.POINTER(ctypes.c_int32)],
+    "el_view_lines_copy": [_P, ctypes.POINTER(OutlineOut)],
+    "el_view_lines_get_message": [_P, ctypes.c_uint32, ctypes.POINTER(ctypes.c_char_p)],
     "el_fillet_outline": [_f32p, _f32p, _f32p, ctypes.c_uint32, _f32p, _f32p, _u8p],
     "el_highlight_table_create": [ctypes.POINTER(TableDesc), ctypes.POINTER(_P)],
     "el_highlight_table_get_info": [_P, ctypes.POINTER(TableInfo)],
@@ -185,7 +204,8 @@ _SIGNATURES = {
     "el_highlight_eval_batch": [_P, ctypes.POINTER(HighlightInput), ctypes.c_uint32, ctypes.POINTER(HighlightResult)],
     "el_highlight_reference": [ctypes.POINTER(HighlightInput), ctypes.POINTER(HighlightResult)],
 }
-_DESTROY = ("el_mesh_destroy", "el_view_destroy", "el_outline_destroy", "el_highlight_table_destroy")
+_DESTROY = ("el_mesh_destroy", "el_view_destroy", "el_outline_destroy", "el_view_lines_destroy",
+            "el_highlight_table_destroy")
 # Every function the binding calls besides el_abi_version: name -> (argtypes, restype). A library
 # lacking any is refused when loaded.
 _FUNCTIONS = {
@@ -504,6 +524,58 @@ class Outline(_Handle):
         count = ctypes.c_uint32()
         self._lib.call("el_outline_lines", self._h, ctypes.byref(v), ctypes.byref(ins), ctypes.byref(o), ctypes.byref(count))
         return {k: (a[:count.value] if a is not None else None) for k, a in out.items()}
+
+
+def outline_views(matrices, camera):
+    """OUTLINE_VIEW records of the instances' transforms `matrices` (N, 4, 4) seen by `camera`
+    (passes.camera.Camera)."""
+    m = np.asarray(matrices, np.float64).reshape(-1, 16)
+    v = np.zeros(len(m), OUTLINE_VIEW)
+    v["projection"] = ORTHOGRAPHIC if camera.orthographic else PERSPECTIVE
+    if camera.orthographic:
+        v["view_dir"] = np.asarray(camera.view_dir, np.float64)
+    else:
+        v["eye"] = np.asarray(camera.eye, np.float64)
+    v["object_to_world"] = m
+    v["world_to_view"] = np.asarray(camera.view, np.float64).reshape(16)
+    v["view_to_clip"] = np.asarray(camera.projection, np.float64).reshape(16)
+    v["width"], v["height"] = camera.width, camera.height
+    return v
+
+
+def view_lines(mesh, views, outline=None, edge_faces=None, taper=False):
+    """el_view_lines: the silhouettes of instances of `mesh` (a Mesh) seen as `views`
+    (outline_views), chained, on the rounded outline of `outline` (an Outline; None: on the
+    sharp edges), carrying `edge_faces` ((E, 2) per mesh edge; None: no faces), tapered with
+    `taper`: (offsets (N + 1,), {instance: the library's message} for those whose view failed
+    (a singular transform, say: no segments), a dict of the concatenated arrays p0, p1, n1, n2,
+    taper, faces (None without edge_faces), links)."""
+    lib = mesh._lib
+    views = np.ascontiguousarray(views, OUTLINE_VIEW)
+    faces = _contiguous(edge_faces, np.float32, 2)
+    desc = ViewLinesDesc(mesh._h.value, outline._h.value if outline is not None else None, _address(faces),
+                         _address(views), len(views), VIEW_LINES_TAPER if taper else 0)
+    handle = _P()
+    lib.call("el_view_lines_create", ctypes.byref(desc), ctypes.byref(handle))
+    try:
+        offsets = np.empty(len(views) + 1, np.uint32)
+        status = np.empty(len(views), np.int32)
+        lib.call("el_view_lines_get_offsets", handle, _ptr(offsets, ctypes.c_uint32), len(offsets),
+                 _ptr(status, ctypes.c_int32))
+        total = int(offsets[-1])
+        out = {k: np.empty((total, c), np.float32) for k, c in (("p0", 3), ("p1", 3), ("n1", 3), ("n2", 3), ("taper", 2))}
+        out["faces"] = np.empty((total, 2), np.float32) if faces is not None else None
+        out["links"] = np.empty(total, CHAIN_LINK)
+        o = OutlineOut(*(_address(out[k]) for k in ("p0", "p1", "n1", "n2", "taper", "faces", "links")), total)
+        lib.call("el_view_lines_copy", handle, ctypes.byref(o))
+        failed = {}
+        for i in np.flatnonzero(status):
+            message = ctypes.c_char_p()
+            lib.call("el_view_lines_get_message", handle, int(i), ctypes.byref(message))
+            failed[int(i)] = f"{lib.lib.el_status_name(int(status[i])).decode()}: {message.value.decode()}"
+    finally:
+        lib.lib.el_view_lines_destroy(handle)
+    return offsets.astype(np.int64), failed, out
 
 
 def fillet_outline(na, nb, v, lib=None):

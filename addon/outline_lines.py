@@ -6,10 +6,8 @@ point: r from the fillet's axis along P = (Na x Nb) x V / |...|, turned towards 
 which lies r C from the axis. That is a move of -r (C - P) in world space, judged with the
 normals and the radius the strip is (zero where the end is no silhouette, as the strip's width
 is), so the stroke's centre lies on the strip's inner side. The library does the per-view work
-(native/src/outline_lines.cpp, el_outline_lines); this module hands it the mesh's records once per
-extraction and each instance's segments. No bpy: plain-Python tests import it."""
-import dataclasses
-
+(native/src/outline_lines.cpp; lines.silhouettes asks it for all instances of a mesh at once,
+el_view_lines); this module hands it the mesh's records once per extraction. No bpy: plain-Python tests import it."""
 import numpy as np
 
 from . import native, rounded_outline
@@ -26,17 +24,3 @@ def outline_of(extract):
                               crecs.reshape(-1, 4 * native.OUTLINE_CORNER_TEXELS), cverts)
     return rounded_outline.from_edges(extract, "outline lines", compute)
 
-
-def on_rounded_outline(extract, edge_pairs, seg, matrix, camera):
-    """`seg` (lines.LineSegments, object space) of silhouettes along the mesh edges `edge_pairs`
-    (vertex pairs, p0's vertex first), with those on convex rounded edges moved onto their
-    fillets' outline, their corners joined (round a corner patch's ball, by an arc of its
-    circle appended as segments of their own), and an unmoved silhouette they run on into
-    ending at the fillet's foot, joined to them there: a new LineSegments (el_outline_lines)."""
-    outline = outline_of(extract)
-    if not len(outline) or not len(seg.p0):
-        return seg
-    out = outline.lines(edge_pairs, seg.p0, seg.p1, seg.n1, seg.n2, seg.taper, seg.faces, seg.chain_links,
-                        matrix, camera)
-    return dataclasses.replace(seg, p0=out["p0"], p1=out["p1"], n1=out["n1"], n2=out["n2"], taper=out["taper"],
-                               faces=out["faces"], chain_links=out["links"])

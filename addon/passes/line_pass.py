@@ -174,9 +174,14 @@ def _mat(m):
     return np.asarray(m, dtype=np.float32).T.reshape(-1)
 
 
-def _stretch(m):
-    """The largest factor by which the linear part of model matrix m stretches a length."""
-    return float(np.linalg.norm(np.asarray(m, np.float64)[:3, :3], 2))
+def _stretches(matrices):
+    """{id(m): the largest factor by which the linear part of model matrix m stretches a
+    length}, for all of them at once (one batched SVD, not one per instance)."""
+    by_id = {id(m): m for m in matrices}
+    if not by_id:
+        return {}
+    lin = np.stack([np.asarray(m, np.float64)[:3, :3] for m in by_id.values()])
+    return dict(zip(by_id, np.linalg.svd(lin, compute_uv=False)[:, 0].tolist()))
 
 
 def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None, rounded=False):
@@ -201,7 +206,7 @@ def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None, rounde
         shader.uniform_block("frame", ubo)
         shader_lib.set_sampler(shader, "surface_depth", targets.surface_depth)
         shader_lib.set_sampler(shader, "surface_id", targets.surface_id)
-        stretch = {}
+        stretch = _stretches(matrix for matrix, _, _ in instances)
         # Ink of the types between faces past the fillets' outline is left out where the
         # silhouettes, moved onto that outline, ink it instead (line.frag.glsl).
         past = rounded and "silhouette" in settings.types
@@ -212,9 +217,6 @@ def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None, rounde
                 entry = sets.get(kind)
                 if entry is None:
                     continue
-                key = id(matrix)
-                if key not in stretch:
-                    stretch[key] = _stretch(matrix)
                 shader_lib.set_uniform(shader, "model", _mat(matrix))
                 shader_lib.set_uniform(shader, "line_vis", (settings.hidden_opacity, REL_BIAS, float(instance_id),
                                                             1.0 if kind in OUTLINE_TYPES else (-1.0 if past else 0.0)))
@@ -222,7 +224,7 @@ def draw_lines(targets, instances, settings, ubo, stats, checkpoint=None, rounde
                 # could span, is drawn segment by segment.
                 shader_lib.set_uniform(shader, "line_lod", (TOLERANCE_PX if style.taper <= 0.0 else -1.0,
                                                             SUBPIXEL_PX if kind == "crease" else 0.0,
-                                                            stretch[key], 1.0 if CULL_HIDDEN else 0.0))
+                                                            stretch[id(matrix)], 1.0 if CULL_HIDDEN else 0.0))
                 shader_lib.set_sampler(shader, "line_nodes", entry.nodes)
                 shader_lib.set_sampler(shader, "line_faces", entry.faces)
                 stats.lines_drawn += entry.count

@@ -51,13 +51,17 @@ def cull_modes(scene, camera):
     counter-clockwise where its transform mirrors it (surface.frag's front and back take the
     mirror into account the same way)."""
     clip_matrix = np.asarray(camera.projection, np.float64) @ np.asarray(camera.view, np.float64)
-    out = []
-    for inst in scene.instances:
-        m = inst.mesh
-        if not m.closed or m.box is None or not closed_surfaces.hidden_back_faces(m.box, inst.matrix, clip_matrix):
-            out.append('NONE')
-        else:
-            out.append('FRONT' if np.linalg.det(np.asarray(inst.matrix, np.float64)[:3, :3]) < 0.0 else 'BACK')
+    out = ['NONE'] * len(scene.instances)
+    closed = [i for i, inst in enumerate(scene.instances) if inst.mesh.closed and inst.mesh.box is not None]
+    if not closed:
+        return out
+    matrices = np.stack([np.asarray(scene.instances[i].matrix, np.float64) for i in closed])
+    boxes = np.stack([np.asarray(scene.instances[i].mesh.box, np.float64) for i in closed])
+    hidden = closed_surfaces.hidden_back_faces(boxes, matrices, clip_matrix)
+    mirrored = np.linalg.det(matrices[:, :3, :3]) < 0.0
+    for k, i in enumerate(closed):
+        if hidden[k]:
+            out[i] = 'FRONT' if mirrored[k] else 'BACK'
     return out
 
 

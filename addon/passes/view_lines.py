@@ -1,5 +1,7 @@
 """Per instance, the line batches a frame draws: each geometry's static ones and the
 view-dependent silhouettes and contours (native view calls)."""
+import numpy as np
+
 from .. import lines as ink
 from .. import native
 
@@ -19,31 +21,59 @@ def line_instances(scene, gpu_meshes, view_batches):
 
 
 def view_line_segments(scene, camera, line_settings, counters=None, rounded=False):
-    """Per instance, type -> LineSegments of the view-dependent types (native view calls). An
-    instance the library refuses (a singular transform, say) gets none, and a report. With
-    `rounded`, silhouettes of rounded edges lie on the fillets' outline (lines.view_lines); an
-    instance whose move fails keeps them on its sharp edges, with a report."""
-    out, seen = [], {}
-    for inst in scene.instances:
-        index = seen[id(inst.mesh)] = seen.get(id(inst.mesh), -1) + 1
-        if inst.holdout:  # a hole in the image has no ink
-            out.append({})
+    """Per instance, type -> LineSegments of the view-dependent types. The silhouettes of all
+    instances of one mesh come from one library call (lines.silhouettes), the contours from
+    each instance's native view. An instance the library refuses (a singular transform, say)
+    gets none, and a report. With `rounded`, silhouettes of rounded edges lie on the fillets'
+    outline; a mesh whose move fails keeps them on its sharp edges, with a report."""
+    kinds = [k for k in line_settings.types if k in ink.VIEW_TYPES] if line_settings else []
+    out = [{} for _ in scene.instances]
+    if not kinds:
+        return out
+    groups, index = {}, []
+    for i, inst in enumerate(scene.instances):
+        group = groups.setdefault(id(inst.mesh), [])
+        index.append(len(group))  # its place among its mesh's instances: its native view's key
+        group.append(i)
+    for members in groups.values():
+        drawn = [i for i in members if not scene.instances[i].holdout]  # a hole in the image has no ink
+        if not drawn:
             continue
-        try:
-            try:
-                out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters, rounded))
-            except (native.NativeError, ArithmeticError, IndexError, ValueError) as e:
-                if not rounded:
-                    raise
-                # Moving them onto the rounded outline failed (the library's el_outline_lines, or
-                # the records it is given): the object's silhouettes stay on its sharp edges, and
-                # the render goes on. Should the view itself have failed, the retry says so.
-                _report(scene, f"{inst.mesh.name}: silhouettes left on the sharp edges ({type(e).__name__}: {e})")
-                out.append(ink.view_lines(inst.mesh, index, inst.matrix, camera, line_settings, counters, False))
-        except native.NativeError as e:
-            _report(scene, f"{inst.mesh.name}: no silhouettes or contours ({e.message})")
-            out.append({})
+        extract = scene.instances[drawn[0]].mesh
+        if counters is not None:
+            counters.view_calls += len(drawn)
+        if "silhouette" in kinds:
+            taper = line_settings.style("silhouette").taper > 0.0
+            for i, seg in zip(drawn, _silhouettes(scene, extract, [scene.instances[i].matrix for i in drawn],
+                                                   camera, taper, rounded)):
+                if isinstance(seg, str):
+                    _report(scene, f"{extract.name}: no silhouettes or contours ({seg})")
+                else:
+                    out[i]["silhouette"] = seg
+        if "contour" in kinds:
+            for i in drawn:
+                inst = scene.instances[i]
+                try:
+                    out[i]["contour"] = ink.contours(extract, index[i], inst.matrix, camera, line_settings)
+                except native.NativeError as e:
+                    _report(scene, f"{extract.name}: no silhouettes or contours ({e.message})")
     return out
+
+
+def _silhouettes(scene, extract, matrices, camera, taper, rounded):
+    """lines.silhouettes of the instances of one mesh; where the move onto the rounded outline
+    fails (the library refusing the mesh's records), on the sharp edges with a report, and where
+    the library refuses the views altogether, none (a status name each)."""
+    try:
+        try:
+            return ink.silhouettes(extract, np.asarray(matrices), camera, taper, rounded)
+        except (native.NativeError, ArithmeticError, IndexError, ValueError) as e:
+            if not rounded:
+                raise
+            _report(scene, f"{extract.name}: silhouettes left on the sharp edges ({type(e).__name__}: {e})")
+            return ink.silhouettes(extract, np.asarray(matrices), camera, taper, False)
+    except native.NativeError as e:
+        return [f"{e.status}: {e.message}"] * len(matrices)
 
 
 def _report(scene, note):

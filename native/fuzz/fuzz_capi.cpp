@@ -106,6 +106,52 @@ void fuzz_view(FuzzedDataProvider& p, const el_mesh* mesh, const el_mesh_info& i
     el_view_destroy(view);
 }
 
+// Many instances' view lines: any transforms (singular ones fail alone), with or without an
+// outline of records over the mesh's first vertices, faces and taper.
+void fuzz_view_lines(FuzzedDataProvider& p, const el_mesh* mesh, const el_mesh_info& info) {
+    std::vector<float> rec(4 * EL_OUTLINE_EDGE_TEXELS * 2 + 1);
+    for (auto& x : rec) x = float(p.ConsumeIntegralInRange<int>(-2, 2)) * 0.5f;
+    std::vector<uint32_t> rv{0, 1, 1, 2};
+    el_outline_desc od{rec.data(), rv.data(), 2, nullptr, nullptr, 0};
+    el_outline* outline = nullptr;
+    if (p.ConsumeBool()) el_outline_create(&od, &outline);
+    const uint32_t n = p.ConsumeIntegralInRange<uint32_t>(0, 5);
+    std::vector<el_outline_view> views(n + 1);
+    for (auto& v : views) {
+        v.projection = p.ConsumeIntegralInRange<int32_t>(-1, 2);
+        fill3(p, v.eye);
+        fill3(p, v.view_dir);
+        for (float* m : {v.object_to_world, v.world_to_view, v.view_to_clip}) {
+            const bool identity = p.ConsumeBool();
+            for (int i = 0; i < 16; ++i) m[i] = identity ? (i % 5 == 0 ? 1.0f : 0.0f) : any_float(p);
+        }
+        v.width = p.ConsumeBool() ? 64.0f : any_float(p);
+        v.height = 48.0f;
+    }
+    std::vector<float> faces(2 * size_t(info.edge_count) + 1, 1.0f);
+    if (p.ConsumeIntegralInRange<int>(0, 7) == 0) faces[0] = any_float(p);
+    el_view_lines_desc d{mesh, outline, p.ConsumeBool() ? faces.data() : nullptr, views.data(), n,
+                         p.ConsumeIntegralInRange<uint32_t>(0, 2)};
+    el_view_lines* lines = nullptr;
+    if (el_view_lines_create(p.ConsumeIntegralInRange<int>(0, 15) ? &d : nullptr, &lines) == EL_OK) {
+        std::vector<uint32_t> offsets(n + 2);
+        std::vector<int32_t> status(n + 1);
+        el_view_lines_get_offsets(lines, offsets.data(), capacity_for(p, n + 1), p.ConsumeBool() ? status.data() : nullptr);
+        const char* message = nullptr;
+        el_view_lines_get_message(lines, p.ConsumeIntegralInRange<uint32_t>(0, n + 1), &message);
+        const uint32_t total = offsets[n];
+        const uint32_t cap = capacity_for(p, total);
+        std::vector<float> o3(4 * (3 * size_t(cap) + 1)), o2(2 * (2 * size_t(cap) + 1));
+        std::vector<el_chain_link> links(cap + 1);
+        el_outline_out out{&o3[0], &o3[3 * size_t(cap) + 1], &o3[2 * (3 * size_t(cap) + 1)],
+                           &o3[3 * (3 * size_t(cap) + 1)], &o2[0], &o2[2 * size_t(cap) + 1],
+                           p.ConsumeIntegralInRange<int>(0, 7) ? links.data() : nullptr, cap};
+        el_view_lines_copy(lines, &out);
+    }
+    el_view_lines_destroy(lines);
+    el_outline_destroy(outline);
+}
+
 void fuzz_mesh(FuzzedDataProvider& p) {
     const uint32_t vc = p.ConsumeIntegralInRange<uint32_t>(0, 48);
     const uint32_t tc = p.ConsumeIntegralInRange<uint32_t>(0, 48);
@@ -207,6 +253,7 @@ void fuzz_mesh(FuzzedDataProvider& p) {
     el_mesh_chain_edges(mesh, p.ConsumeBool() ? chain_edges.data() : nullptr, n_chain, links.data(),
                         chains.data(), kcap, &count);
     fuzz_view(p, mesh, info);
+    fuzz_view_lines(p, mesh, info);
     el_mesh_destroy(mesh);
 }
 
@@ -371,6 +418,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     el_mesh_destroy(nullptr);
     el_view_destroy(nullptr);
     el_outline_destroy(nullptr);
+    el_view_lines_destroy(nullptr);
     el_highlight_table_destroy(nullptr);
     return 0;
 }

@@ -2,6 +2,7 @@
 #include "capi_common.hpp"
 #include "handles.hpp"
 #include "outline_lines.hpp"
+#include "view_lines.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -16,35 +17,6 @@ namespace {
 void require_finite_array(const float* a, size_t count, const char* name) {
     for (size_t i = 0; i < count; ++i)
         if (!std::isfinite(a[i])) el::fail(EL_ERR_NON_FINITE, std::string(name) + "[" + std::to_string(i) + "] is not finite");
-}
-
-el::Mat4 matrix(const float* m, const char* name) {
-    require_finite_array(m, 16, name);
-    el::Mat4 r{};
-    std::copy(m, m + 16, r.m);
-    return r;
-}
-
-el::OutlineCamera camera_of(const el_outline_view& v) {
-    el::OutlineCamera c;
-    if (v.projection != EL_PERSPECTIVE && v.projection != EL_ORTHOGRAPHIC)
-        el::fail(EL_ERR_INVALID_ARGUMENT, "view->projection " + std::to_string(v.projection) + " is no el_projection");
-    c.orthographic = v.projection == EL_ORTHOGRAPHIC;
-    el::require_finite3(v.eye, "view->eye");
-    el::require_finite3(v.view_dir, "view->view_dir");
-    c.eye = glm::dvec3(v.eye[0], v.eye[1], v.eye[2]);
-    c.view_dir = glm::dvec3(v.view_dir[0], v.view_dir[1], v.view_dir[2]);
-    if (c.orthographic && !(glm::length(c.view_dir) > 0.0))
-        el::fail(EL_ERR_INVALID_ARGUMENT, "view->view_dir is zero in an orthographic view");
-    c.object_to_world = matrix(v.object_to_world, "view->object_to_world");
-    c.world_to_view = matrix(v.world_to_view, "view->world_to_view");
-    c.view_to_clip = matrix(v.view_to_clip, "view->view_to_clip");
-    el::require_finite(v.width, "view->width");
-    el::require_finite(v.height, "view->height");
-    if (!(v.width > 0.0f && v.height > 0.0f)) el::fail(EL_ERR_INVALID_ARGUMENT, "view->width and height must be positive");
-    c.width = v.width;
-    c.height = v.height;
-    return c;
 }
 
 }  // namespace
@@ -83,7 +55,7 @@ EL_API el_status el_outline_lines(const el_outline* outline, const el_outline_vi
         require(in, "in");
         require(out, "out");
         require(out_count, "out_count");
-        const el::OutlineCamera camera = camera_of(*view);
+        const el::OutlineCamera camera = el::outline_camera(*view);
         const size_t n = in->count;
         el::OutlineSegments seg;
         seg.has_faces = in->faces != nullptr;

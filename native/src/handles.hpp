@@ -5,6 +5,7 @@
 #include "mesh_data.hpp"
 #include "outline_lines.hpp"
 #include "view_cache.hpp"
+#include "view_lines.hpp"
 
 #include <memory>
 
@@ -18,4 +19,9 @@ struct el_view {
 
 struct el_outline {
     el::OutlineRecords records;
+};
+
+struct el_view_lines {
+    el::ViewLines lines;
+    bool has_faces = false;
 };

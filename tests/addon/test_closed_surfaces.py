@@ -81,6 +81,19 @@ class HiddenBackFaces(unittest.TestCase):
         self.assertFalse(closed_surfaces.hidden_back_faces(self.BOX, moved, camera))
         self.assertTrue(closed_surfaces.hidden_back_faces(self.BOX, np.eye(4), look_at((4.0, -5.0, 3.0), (0.5, 0.5, 0.5))))
 
+    def test_many_instances_at_once(self):
+        """Stacked boxes and transforms (surface_pass.cull_modes' one call a frame): each the
+        answer it gets alone."""
+        camera = look_at((4.5, -4.5, 3.5), (10.0, -4.5, 3.5))
+        moved = [np.eye(4) for _ in range(4)]
+        for m, at in zip(moved, ((4.0, -5.0, 3.0), (8.0, -5.0, 3.0), (0.0, 0.0, 0.0), (20.0, -5.0, 3.0))):
+            m[:3, 3] = at
+        boxes = np.stack([self.BOX, self.BOX * 2.0, self.BOX, self.BOX])
+        together = closed_surfaces.hidden_back_faces(boxes, np.stack(moved), camera)
+        alone = [bool(closed_surfaces.hidden_back_faces(b, m, camera)) for b, m in zip(boxes, moved)]
+        self.assertEqual(together.tolist(), alone)
+        self.assertEqual(alone, [False, True, False, True])
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -20,6 +20,15 @@ from test_rounded_outline import extract_of
 native = addon_module("native")
 outline_lines = addon_module("outline_lines")
 
+
+def on_rounded_outline(extract, edge_pairs, seg, matrix, camera):
+    """The library's move of one instance's segments (el_outline_lines, with the records the
+    add-on hands it: outline_lines.outline_of), as the reference's on_rounded_outline."""
+    out = outline_lines.outline_of(extract).lines(edge_pairs, seg.p0, seg.p1, seg.n1, seg.n2, seg.taper, seg.faces,
+                                                   seg.chain_links, matrix, camera)
+    return dataclasses.replace(seg, p0=out["p0"], p1=out["p1"], n1=out["n1"], n2=out["n2"], taper=out["taper"],
+                               faces=out["faces"], chain_links=out["links"])
+
 R = 0.1
 NA, NB = np.array([0.0, 0.0, 1.0]), np.array([0.0, -1.0, 0.0])  # top and front faces
 
@@ -217,7 +226,7 @@ class CornerArcs(unittest.TestCase):
         ball's circle (the centre plus r times each one's outline direction), and an arc of it,
         square to the view, joins them in pieces whose chords stay within 0.25 px of it."""
         ex, pairs, seg, camera = box_silhouettes((1.0, 2.0, 3.0))
-        out = outline_lines.on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
+        out = on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
         n = len(seg.p0)
         self.assertEqual(n, 6)
         arcs = slice(n, None)
@@ -244,13 +253,13 @@ class CornerArcs(unittest.TestCase):
         """With the patch at (1, 0, 0) left out (a third edge there not rounded, say), its two
         silhouettes end where their images cross, and the other five corners still round."""
         ex, pairs, seg, camera = box_silhouettes((1.0, 2.0, 3.0))
-        every = len(outline_lines.on_rounded_outline(ex, pairs, seg, np.eye(4), camera).p0) - 6
+        every = len(on_rounded_outline(ex, pairs, seg, np.eye(4), camera).p0) - 6
         ex, pairs, seg, camera = box_silhouettes((1.0, 2.0, 3.0))
         edges = ex.edges[0]
         keep = np.flatnonzero(~np.all(edges.corners.position == (1.0, 0.0, 0.0), axis=1))
         self.assertEqual(len(keep), len(edges.corners) - 1)
         edges.corners = edges.corners.subset(keep)
-        out = outline_lines.on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
+        out = on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
         ends = np.concatenate([out.p0[:6], out.p1[:6]]).astype(np.float64)
         near = np.linalg.norm(ends - (1.0, 0.0, 0.0), axis=1) < 0.3
         self.assertEqual(int(near.sum()), 2)
@@ -260,7 +269,7 @@ class CornerArcs(unittest.TestCase):
     def test_no_arc_where_the_ball_is_under_a_pixel(self):
         """r 0.005: the ball's circle is a pixel wide; the lines join where they cross."""
         ex, pairs, seg, camera = box_silhouettes((1.0, 2.0, 3.0), radius=0.005)
-        out = outline_lines.on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
+        out = on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
         self.assertEqual(len(out.p0), len(seg.p0))
 
 
@@ -338,7 +347,7 @@ class AgainstTheReference(unittest.TestCase):
                 for perspective in (False, True):
                     for to_eye in rng.normal(size=(24, 3)):
                         ex, pairs, seg, camera = box_view(to_eye, matrix, radius, rounded, perspective, rng)
-                        ours = outline_lines.on_rounded_outline(ex, pairs, seg, matrix, camera)
+                        ours = on_rounded_outline(ex, pairs, seg, matrix, camera)
                         ref = reference.on_rounded_outline(ex, pairs, dataclasses.replace(seg), matrix, camera)
                         where = f"{rounded} r {radius}, perspective {perspective}, to eye {to_eye}, matrix\n{matrix}"
                         self.assertEqual(len(ours.p0), len(ref.p0), where)
@@ -361,7 +370,7 @@ class AgainstTheReference(unittest.TestCase):
         for rounded in ("all", "top"):
             ex, pairs, seg, camera = box_view((1.0, -2.0, 1.5), np.eye(4), 0.1, rounded, True, rng)
             seg = dataclasses.replace(seg, faces=None, chain_links=None)
-            ours = outline_lines.on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
+            ours = on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
             ref = reference.on_rounded_outline(ex, pairs, seg, np.eye(4), camera)
             self.assertGreater(len(ours.p0), len(seg.p0))
             self.assertIsNone(ours.faces)

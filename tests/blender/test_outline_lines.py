@@ -202,11 +202,11 @@ class SilhouetteLines(unittest.TestCase):
 
         def fails(*args, **kwargs):
             raise native.NativeError("EL_ERR_INTERNAL", "a broken move")
-        move, outline_lines.on_rounded_outline = outline_lines.on_rounded_outline, fails
+        move, outline_lines.outline_of = outline_lines.outline_of, fails
         try:
             rec = helpers.render()
         finally:
-            outline_lines.on_rounded_outline = move
+            outline_lines.outline_of = move
         notes = [n for n in rec["reports"] if "silhouettes left on the sharp edges" in n]
         print(notes)
         self.assertEqual(len(notes), 1)
@@ -231,13 +231,13 @@ class SilhouetteLines(unittest.TestCase):
         mat.edgelight.radius = zoo.radius_at_width(8.0, np.array((2.2, -3.0, 2.6)), RESOLUTION[0])
         me.materials.append(mat)
         bpy.context.scene.edgelight.use_lines = True
-        seen, view_lines = [], lines.view_lines
-        lines.view_lines = lambda *a, **k: seen.append(view_lines(*a, **k)) or seen[-1]
+        seen, silhouettes = [], lines.silhouettes
+        lines.silhouettes = lambda *a, **k: seen.append(silhouettes(*a, **k)) or seen[-1]
         try:
             rec = helpers.render()
         finally:
-            lines.view_lines = view_lines
-        sil = seen[-1]["silhouette"]
+            lines.silhouettes = silhouettes
+        sil = seen[-1][0]
         ends = helpers.project(rec, np.concatenate([sil.p0, sil.p1]).astype(np.float64))
         gap = np.linalg.norm(ends[:, None] - ends[None], axis=2) + np.eye(len(ends)) * 1e9
         apart = gap.min(axis=1)

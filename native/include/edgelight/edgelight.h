@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 5u
+#define EL_ABI_VERSION 6u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -385,6 +385,45 @@ EL_API el_status el_outline_lines(const el_outline* outline, const el_outline_vi
  * faces the eye and the other does not. 3 floats per vector. */
 EL_API el_status el_fillet_outline(const float* na, const float* nb, const float* v, uint32_t count,
                                    float* out_p, float* out_c, uint8_t* out_silhouette);
+
+/* ------------------------------------------------------------------------------------------ */
+/* View lines of many instances of one mesh, in one call                                        */
+/* ------------------------------------------------------------------------------------------ */
+
+/* The taper value of a segment end with no free end on its chain (el_view_lines_desc). */
+#define EL_NO_TAPER 1.0e9f
+/* el_view_lines_desc.flags */
+#define EL_VIEW_LINES_TAPER (1u << 0) /* taper values from the chains (else EL_NO_TAPER) */
+
+typedef struct el_view_lines el_view_lines;
+
+typedef struct el_view_lines_desc {
+    const el_mesh* mesh;
+    const el_outline* outline;     /* NULL: silhouettes stay on the sharp edges */
+    const float* edge_faces;       /* 2 per mesh edge, what a segment along it carries as faces; NULL: none */
+    const el_outline_view* views;  /* one per instance: its transform and the camera */
+    uint32_t view_count;
+    uint32_t flags;                /* EL_VIEW_LINES_* */
+} el_view_lines_desc;
+
+/* Each instance's silhouettes (el_view_update's, in ascending edge order) as line segments:
+ * object-space ends, the edge's two face normals, per end its taper value (the distance to its
+ * chain's nearest free end over the chain's length, or EL_NO_TAPER), its faces (edge_faces) and
+ * its chain record (chains of the instance's own silhouettes, el_mesh_chain_edges'), moved onto
+ * the rounded outline with an outline (el_outline_lines). Instances run in parallel. An
+ * instance whose view fails (a singular transform, say) gets no segments and its status in
+ * el_view_lines_get_offsets' out_status; the call fails only for bad arguments. */
+EL_API el_status el_view_lines_create(const el_view_lines_desc* desc, el_view_lines** out_lines);
+EL_API void el_view_lines_destroy(el_view_lines* lines);
+/* out_offsets: view_count + 1 values, instance i's segments are [offsets[i], offsets[i + 1]);
+ * out_status (optional): view_count el_status values. */
+EL_API el_status el_view_lines_get_offsets(const el_view_lines* lines, uint32_t* out_offsets, uint32_t capacity,
+                                           int32_t* out_status);
+/* What went wrong with instance `view`'s lines ("" where nothing did), valid while `lines` is. */
+EL_API el_status el_view_lines_get_message(const el_view_lines* lines, uint32_t view, const char** out_message);
+/* All segments, instance after instance, into out (its capacity: offsets[view_count] at least;
+ * faces and links required where the desc had edge_faces, and always). */
+EL_API el_status el_view_lines_copy(const el_view_lines* lines, el_outline_out* out);
 
 /* ------------------------------------------------------------------------------------------ */
 /* Highlight math (docs/highlight_math.md)                                                      */
