@@ -10,7 +10,7 @@ import numpy as np
 
 from . import library_check, platforms
 
-ABI_VERSION = 6
+ABI_VERSION = 7
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -51,6 +51,7 @@ OUTLINE_ARC_MAX_PIECES = 8
 # View lines of many instances (el_view_lines_desc).
 NO_TAPER = 1.0e9  # the taper value of an end with no free end on its chain
 VIEW_LINES_TAPER = 1 << 0
+OUTLINE_FANS_OWN_SIDES = 1 << 0
 
 TABLE_PAPER = 0
 TABLE_WARPED = 1
@@ -197,6 +198,8 @@ _SIGNATURES = {
     "el_view_lines_get_offsets": [_P, _u32p, ctypes.c_uint32, ctypes.POINTER(ctypes.c_int32)],
     "el_view_lines_copy": [_P, ctypes.POINTER(OutlineOut)],
     "el_view_lines_get_message": [_P, ctypes.c_uint32, ctypes.POINTER(ctypes.c_char_p)],
+    "el_outline_fans": [_u32p, _f32p, ctypes.c_uint32, ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32, _f32p,
+                        ctypes.c_uint32, ctypes.c_uint32, ctypes.c_uint32, ctypes.c_float, ctypes.c_uint32, _f32p],
     "el_fillet_outline": [_f32p, _f32p, _f32p, ctypes.c_uint32, _f32p, _f32p, _u8p],
     "el_highlight_table_create": [ctypes.POINTER(TableDesc), ctypes.POINTER(_P)],
     "el_highlight_table_get_info": [_P, ctypes.POINTER(TableInfo)],
@@ -576,6 +579,27 @@ def view_lines(mesh, views, outline=None, edge_faces=None, taper=False):
     finally:
         lib.lib.el_view_lines_destroy(handle)
     return offsets.astype(np.int64), failed, out
+
+
+def outline_fans(tri_verts, tri_normals, item_verts, item_normals, per, cos_max, own_sides=False, lib=None):
+    """el_outline_fans: (T, per) float32, per triangle (tri_verts (T, 3), tri_normals (T, 3), in
+    the surface batch's order) the items (item_verts (N, k), -1 none; item_normals (N, m, 3)) at
+    its corners lying flat with it or, with own_sides, along its own sides, as item + 1."""
+    lib = lib or load()
+    tv = _contiguous(tri_verts, np.uint32, 3)
+    tn = _contiguous(tri_normals, np.float32, 3)
+    iv = np.ascontiguousarray(item_verts, np.int32)
+    normals = np.ascontiguousarray(item_normals, np.float32)
+    out = np.zeros((len(tv), per), np.float32)
+    if not len(iv):
+        return out
+    iv = iv.reshape(len(iv), -1)
+    normals = normals.reshape(len(iv), -1, 3)
+    lib.call("el_outline_fans", _ptr(tv, ctypes.c_uint32), _ptr(tn, ctypes.c_float), len(tv),
+             iv.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), iv.shape[1], _ptr(normals, ctypes.c_float),
+             normals.shape[1], len(iv), OUTLINE_FANS_OWN_SIDES if own_sides else 0, float(cos_max), per,
+             _ptr(out, ctypes.c_float))
+    return out
 
 
 def fillet_outline(na, nb, v, lib=None):

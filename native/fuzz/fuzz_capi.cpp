@@ -401,6 +401,15 @@ void fuzz_outline(FuzzedDataProvider& p) {
     std::vector<uint8_t> sil(n + 1);
     std::vector<float> c(3 * size_t(n) + 1);
     el_fillet_outline(n1.data(), n2.data(), p0.data(), n, p1.data(), c.data(), sil.data());
+    // The wide faces' lists: segments' vertex pairs as triangles, the records' vertices as items.
+    const uint32_t per = p.ConsumeIntegralInRange<uint32_t>(0, 9);
+    const uint32_t tris = n * 2 / 3;
+    std::vector<float> lists(size_t(tris) * per + 1);
+    std::vector<int32_t> items(3 * size_t(ec) + 1);  // up to 3 vertices an item
+    for (auto& x : items) x = p.ConsumeIntegralInRange<int32_t>(p.ConsumeIntegralInRange<int>(0, 7) ? -1 : -3, 9);
+    el_outline_fans(verts.data(), n1.data(), tris, items.data(), p.ConsumeIntegralInRange<uint32_t>(0, 3), edges.data(),
+                    p.ConsumeIntegralInRange<uint32_t>(0, 3), ec, p.ConsumeIntegralInRange<uint32_t>(0, 2), value(), per,
+                    lists.data());
     el_outline_destroy(outline);
 }
 }  // namespace

@@ -1,6 +1,7 @@
 // C entry points for silhouettes on the rounded outline (outline_lines.hpp).
 #include "capi_common.hpp"
 #include "handles.hpp"
+#include "outline_fans.hpp"
 #include "outline_lines.hpp"
 #include "view_lines.hpp"
 
@@ -95,6 +96,40 @@ EL_API el_status el_outline_lines(const el_outline* outline, const el_outline_vi
         std::copy(res.taper.begin(), res.taper.end(), out->taper);
         if (res.has_faces) std::copy(res.faces.begin(), res.faces.end(), out->faces);
         if (res.has_links) std::copy(res.links.begin(), res.links.end(), out->links);
+    });
+}
+
+EL_API el_status el_outline_fans(const uint32_t* tri_verts, const float* tri_normals, uint32_t triangle_count,
+                                 const int32_t* item_verts, uint32_t verts_per_item, const float* item_normals,
+                                 uint32_t normals_per_item, uint32_t item_count, uint32_t flags, float cos_max,
+                                 uint32_t per, float* out) {
+    return guarded("el_outline_fans", [&] {
+        if (flags & ~uint32_t(EL_OUTLINE_FANS_OWN_SIDES))
+            el::fail(EL_ERR_INVALID_ARGUMENT, "flags has unknown bits " + std::to_string(flags));
+        const bool own = (flags & EL_OUTLINE_FANS_OWN_SIDES) != 0;
+        if (verts_per_item < 1 || verts_per_item > 4 || (own && verts_per_item != 2))
+            el::fail(EL_ERR_INVALID_ARGUMENT, "verts_per_item " + std::to_string(verts_per_item) +
+                                                  " (1 to 4; 2 with EL_OUTLINE_FANS_OWN_SIDES)");
+        if (normals_per_item < 1 || normals_per_item > 4)
+            el::fail(EL_ERR_INVALID_ARGUMENT, "normals_per_item " + std::to_string(normals_per_item) + " (1 to 4)");
+        el::require_finite(cos_max, "cos_max");
+        if (triangle_count == 0 || per == 0) return;
+        require(tri_verts, "tri_verts");
+        require(tri_normals, "tri_normals");
+        require(out, "out");
+        if (item_count) {
+            require(item_verts, "item_verts");
+            require(item_normals, "item_normals");
+        }
+        require_finite_array(tri_normals, 3 * size_t(triangle_count), "tri_normals");
+        require_finite_array(item_normals, 3 * size_t(item_count) * normals_per_item, "item_normals");
+        for (size_t k = 0; k < size_t(item_count) * verts_per_item; ++k)
+            if (item_verts[k] < -1)
+                el::fail(EL_ERR_INVALID_ARGUMENT, "item_verts[" + std::to_string(k) + "] = " +
+                                                      std::to_string(item_verts[k]) + " (a vertex, or -1)");
+        el::outline_fans(tri_verts, tri_normals, triangle_count,
+                         el::FanItems{item_verts, verts_per_item, item_normals, normals_per_item, item_count, own},
+                         cos_max, per, out);
     });
 }
 

@@ -10,6 +10,7 @@ import unittest
 
 import numpy as np
 
+import rounded_outline_reference as reference
 from addon_modules import addon_module
 from small_meshes import box, edge_frame, mesh
 
@@ -224,6 +225,42 @@ class RoundedOutline(unittest.TestCase):
             rounded_outline._thinnest = thinnest
         self.assertEqual(listed(fast), listed(walked))
         self.assertTrue(all(len(x) == 4 for x in listed(fast)))
+
+    def test_the_librarys_fans_are_the_references(self):
+        """el_outline_fans against the numpy it replaced (rounded_outline_reference.fans): grid
+        boxes of 1 to 4 quads a side, the triangles in shuffled batch orders, random subsets of
+        the edges (their faces' normals, some turned off the faces) and of the vertices as
+        corners, lists of 2 to 8: the same lists, slot for slot."""
+        rng = np.random.default_rng(9)
+        radius_clamp = addon_module("radius_clamp")
+        listed_any = 0
+        for n in (1, 2, 3, 4):
+            positions, edges, polys, tris = grid_box(n)
+            normals, _ = edge_frame(positions, edges, polys, tris)
+            tri_normal = np.asarray(polys.normal, np.float32)[np.asarray(polys.tri_poly)]
+            for _ in range(6):
+                order = rng.permutation(len(tris))
+                pick = rng.random(len(edges)) < 0.4
+                verts = edges[pick]
+                item_normals = normals[pick].reshape(-1, 2, 3).astype(np.float32)
+                turn = rng.random(len(verts)) < 0.3
+                item_normals[turn] = rng.normal(size=(int(turn.sum()), 2, 3)).astype(np.float32)
+                item_normals /= np.linalg.norm(item_normals, axis=2, keepdims=True)
+                per = int(rng.integers(2, 9))
+                got = rounded_outline._fans(tris, tri_normal, order, verts, item_normals, per, verts)
+                want = reference.fans(tris, tri_normal, order, verts, item_normals, per, verts,
+                                      radius_clamp.SMOOTH_FOLD_DEG)
+                np.testing.assert_array_equal(got, want, f"grid {n}, per {per}")
+                corners = rng.choice(len(positions), size=len(positions) // 3, replace=False)
+                sectors = rng.normal(size=(len(corners), 3, 3)).astype(np.float32)
+                sectors[::2, 0] = tri_normal[rng.integers(0, len(tris), len(sectors[::2]))]
+                sectors /= np.linalg.norm(sectors, axis=2, keepdims=True)
+                got = rounded_outline._fans(tris, tri_normal, order, corners[:, None], sectors, per)
+                want = reference.fans(tris, tri_normal, order, corners[:, None], sectors, per, None,
+                                      radius_clamp.SMOOTH_FOLD_DEG)
+                np.testing.assert_array_equal(got, want, f"grid {n} corners, per {per}")
+                listed_any += int((got > 0).sum())
+        self.assertGreater(listed_any, 100)
 
     def test_concave_edge_is_not_listed(self):
         positions, edges, polys, tris, n = l_prism()

@@ -181,3 +181,29 @@ TEST(OutlineLines, FilletOutlinePointInClosedForm) {
     EXPECT_NEAR(c[2], 1.0f, 1e-6);
     expect_fails(el_fillet_outline(na, nullptr, v, 1, p, c, &sil), EL_ERR_NULL_POINTER, "nb");
 }
+
+TEST(OutlineLines, FansListOwnSidesFirstAndCheckTheirInputs) {
+    // Triangles (0 1 2) and (0 2 3) of the unit square in z = 0; edge items 0-1 (its own side
+    // for the first), 2-5 (at corner 2, flat with both) and 0-7 (at corner 0, standing up).
+    const uint32_t tris[6] = {0, 1, 2, 0, 2, 3};
+    const float tri_n[6] = {0, 0, 1, 0, 0, 1};
+    const int32_t items[6] = {2, 5, 0, 7, 0, 1};
+    const float item_n[18] = {0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1, 0, 0, 0, -1, 0, 1, 0};
+    float out[8];
+    ASSERT_EQ(el_outline_fans(tris, tri_n, 2, items, 2, item_n, 2, 3, EL_OUTLINE_FANS_OWN_SIDES, 0.866f, 4, out), EL_OK)
+        << el_last_error();
+    // The first: its own side 0-1 (item 2) first, then 2-5 (item 0), flat at its corner 2; the
+    // second: 0-1 and 2-5 both flat at its corners 0 and 1, in that order; 0-7 nowhere.
+    const float want[8] = {3, 1, 0, 0, 3, 1, 0, 0};
+    for (int i = 0; i < 8; ++i) EXPECT_EQ(out[i], want[i]) << i;
+    expect_fails(el_outline_fans(tris, tri_n, 2, items, 1, item_n, 2, 3, EL_OUTLINE_FANS_OWN_SIDES, 0.866f, 4, out),
+                 EL_ERR_INVALID_ARGUMENT, "verts_per_item");
+    const int32_t bad[6] = {2, 5, -4, 7, 0, 1};
+    expect_fails(el_outline_fans(tris, tri_n, 2, bad, 2, item_n, 2, 3, 0, 0.866f, 4, out), EL_ERR_INVALID_ARGUMENT,
+                 "item_verts[2]");
+    const float nan_n[6] = {0, 0, std::numeric_limits<float>::quiet_NaN(), 0, 0, 1};
+    expect_fails(el_outline_fans(tris, nan_n, 2, items, 2, item_n, 2, 3, 0, 0.866f, 4, out), EL_ERR_NON_FINITE,
+                 "tri_normals[2]");
+    expect_fails(el_outline_fans(tris, tri_n, 2, items, 2, item_n, 2, 3, 8, 0.866f, 4, out), EL_ERR_INVALID_ARGUMENT,
+                 "flags");
+}

@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 6u
+#define EL_ABI_VERSION 7u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -378,6 +378,20 @@ EL_API void el_outline_destroy(el_outline* outline);
  * (also on EL_ERR_BUFFER_TOO_SMALL, so the caller can retry). */
 EL_API el_status el_outline_lines(const el_outline* outline, const el_outline_view* view,
                                   const el_outline_segments* in, el_outline_out* out, uint32_t* out_count);
+/* Per triangle, the rounded edges (or corner patches) whose strip (or zone) may cross it, where
+ * the mesh's faces are wider than every strip and zone: the items at its corners (an item's
+ * vertices: item_verts, verts_per_item each, -1 for none) lying flat with it (|N_t . N| >=
+ * cos_max for one of the item's normals_per_item normals) or, with EL_OUTLINE_FANS_OWN_SIDES
+ * (items are edges, verts_per_item 2), running along its own side. out: per triangle `per`
+ * floats, item number + 1 (0: none), its own sides first, then the others in the order its
+ * corners and their items come. Triangles in the caller's order (the surface batch's):
+ * tri_verts 3 and tri_normals 3 floats per triangle. The surface pass's outline lists
+ * (shaders/outline_layout.json). */
+#define EL_OUTLINE_FANS_OWN_SIDES (1u << 0)
+EL_API el_status el_outline_fans(const uint32_t* tri_verts, const float* tri_normals, uint32_t triangle_count,
+                                 const int32_t* item_verts, uint32_t verts_per_item, const float* item_normals,
+                                 uint32_t normals_per_item, uint32_t item_count, uint32_t flags, float cos_max,
+                                 uint32_t per, float* out);
 /* The fillet's outline point (rounded_outline.glsl's el_fillet_outline), for count convex fillets
  * of radius 1 between faces of unit normals na, nb seen along v (unit, towards the eye): out_p
  * the unit direction from the axis to the outline point, turned towards the sharp edge (0 where
