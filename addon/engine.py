@@ -13,7 +13,7 @@ import gpu
 import numpy as np
 
 from . import compat, lines, native, render_cache, render_passes, scene_sync, svg_output, viewport
-from .passes import frame, toon
+from .passes import camera, frame, toon
 
 # Tests set `capture = True` to receive the last render's record (pixels, pass buffers, camera,
 # scene, reports) in `last_render`, per view layer in `last_render["layers"]`. Otherwise a
@@ -142,9 +142,8 @@ def camera_for_render(depsgraph, full_w, full_h, region, view=None):
     if view is not None:
         proj = stereo_shift(proj, view[1] - cam.data.shift_x, full_w, full_h, r, cam)
     _, _, w, h = region
-    return frame.Camera(view=np.linalg.inv(world), projection=region_projection(proj, full_w, full_h, region),
-                        eye=tuple(world[:3, 3]), view_dir=tuple(-world[:3, 2]),
-                        orthographic=cam.data.type == 'ORTHO', width=w, height=h)
+    return camera.from_view(np.linalg.inv(world), region_projection(proj, full_w, full_h, region),
+                            cam.data.type == 'ORTHO', w, h)
 
 
 def render_views(r):

@@ -10,7 +10,7 @@ import numpy as np
 
 from . import library_check, platforms
 
-ABI_VERSION = 7
+ABI_VERSION = 8
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -200,6 +200,8 @@ _SIGNATURES = {
     "el_view_lines_get_message": [_P, ctypes.c_uint32, ctypes.POINTER(ctypes.c_char_p)],
     "el_outline_fans": [_u32p, _f32p, ctypes.c_uint32, ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32, _f32p,
                         ctypes.c_uint32, ctypes.c_uint32, ctypes.c_uint32, ctypes.c_float, ctypes.c_uint32, _f32p],
+    "el_shading_normals": [_f32p, ctypes.c_uint32, _u32p, _f32p, ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32,
+                           _u32p, _f32p, ctypes.c_uint32, _u32p, ctypes.c_uint32, ctypes.c_float, _f32p],
     "el_fillet_outline": [_f32p, _f32p, _f32p, ctypes.c_uint32, _f32p, _f32p, _u8p],
     "el_highlight_table_create": [ctypes.POINTER(TableDesc), ctypes.POINTER(_P)],
     "el_highlight_table_get_info": [_P, ctypes.POINTER(TableInfo)],
@@ -599,6 +601,30 @@ def outline_fans(tri_verts, tri_normals, item_verts, item_normals, per, cos_max,
              iv.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), iv.shape[1], _ptr(normals, ctypes.c_float),
              normals.shape[1], len(iv), OUTLINE_FANS_OWN_SIDES if own_sides else 0, float(cos_max), per,
              _ptr(out, ctypes.c_float))
+    return out
+
+
+def shading_normals(positions, edges, edge_normals, edge_faces, tri_verts, corner_normals, selected, max_turn_deg,
+                    lib=None):
+    """el_shading_normals: (N, 2, 6) float32, per selected edge at its first vertex and then its
+    second, the normals (N1, N2) its band's arc runs between. positions (V, 3), edges (E, 2),
+    edge_normals (E, 6), edge_faces (E, 2) each edge's first two triangles (-1: none), tri_verts
+    (T, 3), corner_normals (T, 3, 3), selected (N,) edge indices."""
+    lib = lib or load()
+    p = _contiguous(positions, np.float32, 3)
+    e = _contiguous(edges, np.uint32, 2)
+    n = _contiguous(edge_normals, np.float32, 6)
+    f = np.ascontiguousarray(edge_faces, np.int32).reshape(-1, 2)
+    t = _contiguous(tri_verts, np.uint32, 3)
+    c = _contiguous(corner_normals, np.float32, 9)
+    sel = _contiguous(selected, np.uint32)
+    if len(n) != len(e) or len(f) != len(e) or len(c) != len(t):
+        raise ValueError(f"shading_normals: {len(e)} edges with {len(n)} normal pairs and {len(f)} face pairs, "
+                         f"{len(t)} triangles with {len(c)} corner normal triples")
+    out = np.empty((len(sel), 2, 6), np.float32)
+    lib.call("el_shading_normals", _ptr(p, ctypes.c_float), len(p), _ptr(e, ctypes.c_uint32), _ptr(n, ctypes.c_float),
+             f.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), len(e), _ptr(t, ctypes.c_uint32), _ptr(c, ctypes.c_float),
+             len(t), _ptr(sel, ctypes.c_uint32), len(sel), float(max_turn_deg), _ptr(out, ctypes.c_float))
     return out
 
 

@@ -75,18 +75,12 @@ def write_render(scene, layer, scene_data, camera, line_settings, vector, record
 
 
 def _view_camera(context):
-    """The 3D view's camera (frame.Camera) when it does not look through the scene camera."""
-    import numpy as np
-
-    from .passes import frame
+    """The 3D view's camera (viewport.viewport_camera) when it does not look through the scene camera."""
+    from .viewport import viewport_camera
     rv3d, region = context.region_data, context.region
     if rv3d is None or region is None or rv3d.view_perspective == 'CAMERA':
         return None
-    view = np.array(rv3d.view_matrix, np.float64)
-    world = np.linalg.inv(view)
-    return frame.Camera(view=view, projection=np.array(rv3d.window_matrix, np.float64), eye=tuple(world[:3, 3]),
-                        view_dir=tuple(-world[:3, 2]), orthographic=not rv3d.is_perspective,
-                        width=region.width, height=region.height)
+    return viewport_camera(rv3d, region.width, region.height)
 
 
 class EDGELIGHT_OT_export_svg(bpy.types.Operator):

@@ -15,8 +15,7 @@ import numpy as np
 
 from . import edge_choice, lines, material_inputs, scene_sync
 from .materials import shading_of
-from .passes import batches, frame, frame_data, line_pass, toon, view_lines
-from .passes.camera import Camera
+from .passes import batches, camera, frame, frame_data, line_pass, toon, view_lines
 from .passes.targets import Targets
 from .radius_scale import radius_scale
 
@@ -321,12 +320,9 @@ def scene_signature(state, scene):
 
 
 def viewport_camera(rv3d, width, height):
-    view = np.array(rv3d.view_matrix, dtype=np.float64)
-    world = np.linalg.inv(view)
-    forward = -world[:3, 2] / np.linalg.norm(world[:3, 2])
-    return Camera(view=view, projection=np.array(rv3d.window_matrix, dtype=np.float64),
-                        eye=tuple(world[:3, 3]), view_dir=tuple(forward),
-                        orthographic=not rv3d.is_perspective, width=width, height=height)
+    """The 3D view's camera (its region 3D's view and window matrices)."""
+    return camera.from_view(np.array(rv3d.view_matrix, np.float64), np.array(rv3d.window_matrix, np.float64),
+                            not rv3d.is_perspective, width, height)
 
 
 def visible_edges(edges, matrix, camera, K):

@@ -20,6 +20,17 @@ class Camera:
         return float(self.projection[0, 0]) * self.width / 2.0
 
 
+def from_view(view, projection, orthographic, width, height):
+    """The one camera builder (the final render's, the viewport's, the SVG export's): the camera
+    of world -> view matrix `view` and view -> clip `projection` (4 x 4 each), its eye and the
+    unit direction it looks along read from the view's inverse."""
+    view = np.asarray(view, np.float64)
+    world = np.linalg.inv(view)
+    forward = -world[:3, 2] / np.linalg.norm(world[:3, 2])
+    return Camera(view=view, projection=np.asarray(projection, np.float64), eye=tuple(world[:3, 3]),
+                  view_dir=tuple(forward), orthographic=bool(orthographic), width=int(width), height=int(height))
+
+
 def halton(i, base):
     f, r = 1.0, 0.0
     while i > 0:

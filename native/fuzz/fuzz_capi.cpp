@@ -410,6 +410,19 @@ void fuzz_outline(FuzzedDataProvider& p) {
     el_outline_fans(verts.data(), n1.data(), tris, items.data(), p.ConsumeIntegralInRange<uint32_t>(0, 3), edges.data(),
                     p.ConsumeIntegralInRange<uint32_t>(0, 3), ec, p.ConsumeIntegralInRange<uint32_t>(0, 2), value(), per,
                     lists.data());
+    // The shading normals of rounded edges: the records' vertex pairs as edges over 8 vertices,
+    // faces among the triangles above (or out of range), any selection.
+    std::vector<float> pos(24), cn(9 * size_t(tris) + 1);
+    for (auto& x : pos) x = value();
+    for (auto& x : cn) x = value();
+    std::vector<int32_t> ef(2 * size_t(ec) + 1);
+    for (auto& x : ef) x = p.ConsumeIntegralInRange<int32_t>(-2, int32_t(tris));
+    std::vector<uint32_t> sel(ec + 1);
+    for (auto& x : sel) x = p.ConsumeIntegralInRange<uint32_t>(0, ec);
+    std::vector<float> normals_out(12 * size_t(ec) + 1);
+    el_shading_normals(pos.data(), 8, ev.data(), edges.data(), ef.data(), ec, verts.data(), cn.data(), tris, sel.data(),
+                       p.ConsumeIntegralInRange<uint32_t>(0, ec), p.ConsumeBool() ? 20.0f : any_float(p),
+                       normals_out.data());
     el_outline_destroy(outline);
 }
 }  // namespace

@@ -8,6 +8,7 @@ library: EDGELIGHT_LIBRARY, which ctest sets).
 """
 import math
 import os
+import types
 import unittest
 from dataclasses import dataclass
 
@@ -177,6 +178,46 @@ class ShadingNormals(unittest.TestCase):
         np.testing.assert_allclose(got[:, :3], [[0, 0, 1]] * 2, atol=1e-6)
 
 
+class ShadingNormalsAgainstTheReference(unittest.TestCase):
+    def test_the_library_gives_the_references_normals(self):
+        """el_shading_normals against the numpy it replaced (edge_data_reference.py) on grid
+        boxes whose triangles' corner normals are their faces' turned by noise (a few degrees to
+        far past the limit), some faces' normals flipped as the library re-orients, some
+        corners' normals zero: the same normals (within 1e-6) at every edge's ends, and both
+        kinds of edge (taking the corners, keeping the faces') met many times."""
+        import edge_data_reference as reference
+        from small_meshes import edge_frame
+        from small_meshes import mesh as small_mesh
+        from test_rounded_outline import grid_box
+        rng = np.random.default_rng(12)
+        taken = kept = 0
+        for n, jitter in ((1, 0.0), (2, 0.0), (3, 0.0), (4, 0.0), (5, 0.0), (3, 0.01), (5, 0.01)):
+            positions, edges, polys, tris = grid_box(n)
+            if jitter:  # the grid's facets folded a little, either way: the fold's sign decides
+                loops = [polys.loop_vert[a:a + k].tolist() for a, k in zip(polys.start, polys.total)]
+                positions, edges, polys, tris = small_mesh(positions + rng.normal(scale=jitter, size=positions.shape),
+                                                           loops)
+            normals, faces = edge_frame(positions, edges, polys, tris)
+            flip = rng.random(len(edges)) < 0.2
+            normals[flip, 3:] *= -1.0
+            tri_n = np.asarray(polys.normal)[np.asarray(polys.tri_poly)]
+            scale = rng.choice([0.03, 0.06, 0.6], size=(len(tris), 1, 1))
+            corner = tri_n[:, None, :] + scale * rng.normal(size=(len(tris), 3, 3))
+            corner[rng.random((len(tris), 3)) < 0.05] = 0.0
+            corner = (corner / np.maximum(np.linalg.norm(corner, axis=2, keepdims=True), 1e-30)).astype(np.float32)
+            d = types.SimpleNamespace(positions=positions.astype(np.float32), edges=edges, face_a=faces[:, 0],
+                                      face_b=faces[:, 1], tri_verts=tris, corner_nor=corner)
+            sel = np.flatnonzero((faces >= 0).all(axis=1))
+            got = edge_data.shading_normals(d, sel, normals)
+            want = reference.shading_normals(d, sel, normals)
+            np.testing.assert_allclose(got, want, atol=1e-6, err_msg=f"grid {n}")
+            same = np.all(np.abs(got[:, 0] - normals[sel]) < 1e-6, axis=1)
+            kept += int(same.sum())
+            taken += int((~same).sum())
+        self.assertGreater(taken, 40)
+        self.assertGreater(kept, 50)
+
+
 class ChooseEdges(unittest.TestCase):
     def test_angle_rule_rounds_edges_past_the_angle(self):
         got = edge_choice.choose_edges(edges_of([10.0, 30.0, 31.0, 90.0]), [Shading()])
@@ -266,6 +307,22 @@ class CreaseRule(unittest.TestCase):
         self.assertFalse(np.any(crease & flipped))
         self.assertTrue(np.array_equal(crease, manifold & ~flipped & (angles > threshold)))
 
+
+
+class OneCameraBuilder(unittest.TestCase):
+    def test_the_eye_and_the_unit_direction_come_from_the_views_inverse(self):
+        """passes.camera.from_view, which the render, the viewport and the SVG export share: a
+        camera at (1, -4, 2) looking along +y, its world matrix scaled by 3 (a scaled camera
+        object): the eye where it stands, the direction unit length."""
+        camera = addon_module("passes.camera")
+        world = np.eye(4)
+        world[:3, :3] = 3.0 * np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])  # -z -> +y
+        world[:3, 3] = (1.0, -4.0, 2.0)
+        c = camera.from_view(np.linalg.inv(world), np.eye(4), True, 640, 480)
+        np.testing.assert_allclose(c.eye, (1.0, -4.0, 2.0), atol=1e-12)
+        np.testing.assert_allclose(c.view_dir, (0.0, 1.0, 0.0), atol=1e-12)
+        self.assertTrue(c.orthographic)
+        self.assertEqual((c.width, c.height), (640, 480))
 
 if __name__ == "__main__":
     unittest.main()

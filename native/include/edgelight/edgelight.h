@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 7u
+#define EL_ABI_VERSION 8u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -399,6 +399,24 @@ EL_API el_status el_outline_fans(const uint32_t* tri_verts, const float* tri_nor
  * faces the eye and the other does not. 3 floats per vector. */
 EL_API el_status el_fillet_outline(const float* na, const float* nb, const float* v, uint32_t count,
                                    float* out_p, float* out_c, uint8_t* out_silhouette);
+
+/* ------------------------------------------------------------------------------------------ */
+/* Rounded edges: what the edge pass shades a band with                                         */
+/* ------------------------------------------------------------------------------------------ */
+
+/* The two normals each selected rounded edge's arc runs between at each of its ends, as the
+ * mesh gives them (edge_normals: N1, N2, 6 floats an edge, the faces' own), each turned to the
+ * normal its side is shaded with there: the corner normal (corner_normals, 9 floats a triangle,
+ * its corners in tri_verts order) of that side's triangle (edge_faces: the edge's first two
+ * triangles, -1 none) at that end, signed as the library's normal, where it lies within
+ * max_turn_deg of it. An edge keeps its faces' normals at both ends where a corner normal at
+ * either end is missing or turned too far, or where taking them would turn the arc round (the
+ * fold's sign about the edge). out: 12 floats a selected edge, (N1, N2) at its first vertex,
+ * then at its second. */
+EL_API el_status el_shading_normals(const float* positions, uint32_t vertex_count, const uint32_t* edges,
+                                    const float* edge_normals, const int32_t* edge_faces, uint32_t edge_count,
+                                    const uint32_t* tri_verts, const float* corner_normals, uint32_t triangle_count,
+                                    const uint32_t* selected, uint32_t count, float max_turn_deg, float* out);
 
 /* ------------------------------------------------------------------------------------------ */
 /* View lines of many instances of one mesh, in one call                                        */
