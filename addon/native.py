@@ -10,7 +10,7 @@ import numpy as np
 
 from . import library_check, platforms
 
-ABI_VERSION = 8
+ABI_VERSION = 10
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -142,6 +142,12 @@ class OutlineView(ctypes.Structure):
                 ("view_to_clip", ctypes.c_float * 16), ("width", ctypes.c_float), ("height", ctypes.c_float)]
 
 
+class Polygons(ctypes.Structure):
+    _fields_ = [("start", _u32p), ("total", _u32p), ("polygon_count", ctypes.c_uint32), ("loop_vert", _u32p),
+                ("loop_edge", _u32p), ("loop_count", ctypes.c_uint32), ("tri_poly", _u32p),
+                ("triangle_count", ctypes.c_uint32), ("normal", _f32p)]
+
+
 class ViewLinesDesc(ctypes.Structure):
     _fields_ = [(name, ctypes.c_void_p) for name in ("mesh", "outline", "edge_faces", "views")] \
         + [("view_count", ctypes.c_uint32), ("flags", ctypes.c_uint32)]
@@ -200,6 +206,11 @@ _SIGNATURES = {
     "el_view_lines_get_message": [_P, ctypes.c_uint32, ctypes.POINTER(ctypes.c_char_p)],
     "el_outline_fans": [_u32p, _f32p, ctypes.c_uint32, ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32, _f32p,
                         ctypes.c_uint32, ctypes.c_uint32, ctypes.c_uint32, ctypes.c_float, ctypes.c_uint32, _f32p],
+    "el_corner_patches": [_f32p, ctypes.c_uint32, _u32p, _f32p, _u8p, _u8p, _f32p, _u8p, ctypes.c_uint32,
+                          ctypes.c_uint32, _u32p, _u32p, _f32p, _f32p, _f32p, _f32p, _u32p],
+    "el_band_ends": [ctypes.POINTER(Polygons), _f32p, ctypes.c_uint32, _u32p, _f32p, _u8p, _u8p,
+                     ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32, _u32p, ctypes.POINTER(ctypes.c_int32),
+                     ctypes.c_uint32, _f32p],
     "el_shading_normals": [_f32p, ctypes.c_uint32, _u32p, _f32p, ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32,
                            _u32p, _f32p, ctypes.c_uint32, _u32p, ctypes.c_uint32, ctypes.c_float, _f32p],
     "el_fillet_outline": [_f32p, _f32p, _f32p, ctypes.c_uint32, _f32p, _f32p, _u8p],
@@ -601,6 +612,65 @@ def outline_fans(tri_verts, tri_normals, item_verts, item_normals, per, cos_max,
              iv.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), iv.shape[1], _ptr(normals, ctypes.c_float),
              normals.shape[1], len(iv), OUTLINE_FANS_OWN_SIDES if own_sides else 0, float(cos_max), per,
              _ptr(out, ctypes.c_float))
+    return out
+
+
+def corner_patches(positions, edges, edge_normals, convex, chosen, radius, stop=None, lib=None):
+    """el_corner_patches: a dict of the corners' vertex (K,), edges (K, 3), normals (K, 3, 3),
+    radius (K,), centre (K, 3) and fold (K,). positions (V, 3), edges (E, 2), edge_normals (E, 6);
+    convex, chosen, stop (E,) booleans (stop None: the chosen); radius (E,)."""
+    lib = lib or load()
+    p = _contiguous(positions, np.float32, 3)
+    e = _contiguous(edges, np.uint32, 2)
+    n = _contiguous(edge_normals, np.float32, 6)
+    flags = [None if a is None else np.ascontiguousarray(a, np.uint8) for a in (convex, chosen, stop)]
+    r = _contiguous(radius, np.float32)
+    if len(n) != len(e) or len(r) != len(e) or any(a is not None and len(a) != len(e) for a in flags):
+        raise ValueError(f"corner_patches: {len(e)} edges with {len(n)} normal pairs and {len(r)} radii")
+    cap = len(p)
+    out = {"vertex": np.empty(cap, np.uint32), "edges": np.empty((cap, 3), np.uint32),
+           "normals": np.empty((cap, 3, 3), np.float32), "radius": np.empty(cap, np.float32),
+           "centre": np.empty((cap, 3), np.float32), "fold": np.empty(cap, np.float32)}
+    count = ctypes.c_uint32()
+    lib.call("el_corner_patches", _ptr(p, ctypes.c_float), len(p), _ptr(e, ctypes.c_uint32), _ptr(n, ctypes.c_float),
+             *(_ptr(a, ctypes.c_uint8) for a in flags[:2]), _ptr(r, ctypes.c_float), _ptr(flags[2], ctypes.c_uint8),
+             len(e), cap, _ptr(out["vertex"], ctypes.c_uint32), _ptr(out["edges"], ctypes.c_uint32),
+             *(_ptr(out[k], ctypes.c_float) for k in ("normals", "radius", "centre", "fold")), ctypes.byref(count))
+    return {k: a[:count.value] for k, a in out.items()}
+
+
+def band_ends(polys, positions, edges, edge_normals, rounded, selected, faces, smooth=None, edge_polys=None,
+              lib=None):
+    """el_band_ends: (N, 4) float32 cut angles of the selected edges' bands. polys: the mesh's
+    polygons (radius_clamp.Polygons: start, total, loop_vert, loop_edge, tri_poly, normal);
+    positions (V, 3), edges (E, 2), edge_normals (E, 6), rounded (E,) bool; selected (N,), faces
+    (N, 2) their triangles (-1 none); smooth (E,) bool and edge_polys (E, 2): faces as smooth
+    patches."""
+    lib = lib or load()
+    keep = {k: _contiguous(getattr(polys, k), np.uint32) for k in ("start", "total", "loop_vert", "loop_edge", "tri_poly")}
+    keep["normal"] = _contiguous(polys.normal, np.float32, 3)
+    pd = Polygons(_ptr(keep["start"], ctypes.c_uint32), _ptr(keep["total"], ctypes.c_uint32), len(keep["start"]),
+                  _ptr(keep["loop_vert"], ctypes.c_uint32), _ptr(keep["loop_edge"], ctypes.c_uint32),
+                  len(keep["loop_vert"]), _ptr(keep["tri_poly"], ctypes.c_uint32), len(keep["tri_poly"]),
+                  _ptr(keep["normal"], ctypes.c_float))
+    p = _contiguous(positions, np.float32, 3)
+    e = _contiguous(edges, np.uint32, 2)
+    n = _contiguous(edge_normals, np.float32, 6)
+    r = np.ascontiguousarray(rounded, np.uint8)
+    sm = None if smooth is None else np.ascontiguousarray(smooth, np.uint8)
+    ep = None if edge_polys is None else np.ascontiguousarray(edge_polys, np.int32).reshape(-1, 2)
+    sel = _contiguous(selected, np.uint32)
+    f = np.ascontiguousarray(faces, np.int32).reshape(-1, 2)
+    if len(n) != len(e) or len(r) != len(e) or len(f) != len(sel) or any(a is not None and len(a) != len(e)
+                                                                          for a in (sm, ep)):
+        raise ValueError(f"band_ends: {len(e)} edges, {len(n)} normal pairs, {len(r)} flags, {len(sel)} selected "
+                         f"with {len(f)} face pairs")
+    out = np.empty((len(sel), 4), np.float32)
+    i32 = ctypes.POINTER(ctypes.c_int32)
+    lib.call("el_band_ends", ctypes.byref(pd), _ptr(p, ctypes.c_float), len(p), _ptr(e, ctypes.c_uint32),
+             _ptr(n, ctypes.c_float), _ptr(r, ctypes.c_uint8), _ptr(sm, ctypes.c_uint8),
+             ep.ctypes.data_as(i32) if ep is not None else None, len(e), _ptr(sel, ctypes.c_uint32),
+             f.ctypes.data_as(i32), len(sel), _ptr(out, ctypes.c_float))
     return out
 
 

@@ -29,7 +29,6 @@ class Polygons:
     tri_poly: np.ndarray     # per loop triangle: its polygon
     loop_edge: np.ndarray = None  # per loop: the edge from its vertex to the next loop's
     normal: np.ndarray = None     # per polygon: unit normal as the file winds it (zero: no area)
-    loop_lookup: tuple = None     # band_ends._loop_lookup's, built on first use
 
 
 def widths(polys, positions, edges, faces):

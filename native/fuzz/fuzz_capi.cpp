@@ -423,6 +423,36 @@ void fuzz_outline(FuzzedDataProvider& p) {
     el_shading_normals(pos.data(), 8, ev.data(), edges.data(), ef.data(), ec, verts.data(), cn.data(), tris, sel.data(),
                        p.ConsumeIntegralInRange<uint32_t>(0, ec), p.ConsumeBool() ? 20.0f : any_float(p),
                        normals_out.data());
+    // Corner patches over the same edges: any flags, radii, exact or short capacities.
+    std::vector<uint8_t> convex(ec + 1), chosen(ec + 1), stops(ec + 1);
+    for (auto* a : {&convex, &chosen, &stops})
+        for (auto& x : *a) x = uint8_t(p.ConsumeIntegralInRange<int>(0, 2));
+    std::vector<float> radii(ec + 1);
+    for (auto& x : radii) x = value();
+    const uint32_t ccap = p.ConsumeIntegralInRange<uint32_t>(0, 8);
+    std::vector<uint32_t> cvert(ccap + 1), cedges(3 * size_t(ccap) + 1);
+    std::vector<float> cnorm(9 * size_t(ccap) + 1), crad(ccap + 1), ccen(3 * size_t(ccap) + 1), cfold(ccap + 1);
+    uint32_t corners_found = 0;
+    el_corner_patches(pos.data(), 8, ev.data(), edges.data(), convex.data(), chosen.data(), radii.data(),
+                      p.ConsumeBool() ? stops.data() : nullptr, ec, ccap, cvert.data(), cedges.data(), cnorm.data(),
+                      crad.data(), ccen.data(), cfold.data(), &corners_found);
+    // Band ends: the triangles above as polygons of three loops, their loops' edges among the
+    // records' (or out of range), with and without the smooth patches' fans.
+    std::vector<uint32_t> pstart(tris + 1), ptotal(tris + 1, 3), ledge(3 * size_t(tris) + 1), tpoly(tris + 1);
+    for (uint32_t k = 0; k < tris; ++k) pstart[k] = 3 * k, tpoly[k] = p.ConsumeIntegralInRange<uint32_t>(0, tris);
+    for (auto& x : ledge) x = p.ConsumeIntegralInRange<uint32_t>(0, ec);
+    std::vector<float> pnorm(3 * size_t(tris) + 1);
+    for (auto& x : pnorm) x = value();
+    if (tris && p.ConsumeBool()) ptotal[0] = p.ConsumeIntegralInRange<uint32_t>(0, 5);
+    const el_polygons polys{pstart.data(), ptotal.data(), tris, verts.data(), ledge.data(), 3 * tris,
+                            tpoly.data(), tris, pnorm.data()};
+    std::vector<int32_t> epolys(2 * size_t(ec) + 1);
+    for (auto& x : epolys) x = p.ConsumeIntegralInRange<int32_t>(-2, int32_t(tris));
+    std::vector<float> angles(4 * size_t(ec) + 1);
+    const bool fans = p.ConsumeBool();
+    el_band_ends(p.ConsumeIntegralInRange<int>(0, 15) ? &polys : nullptr, pos.data(), 8, ev.data(), edges.data(),
+                 chosen.data(), fans ? stops.data() : nullptr, fans ? epolys.data() : nullptr, ec, sel.data(),
+                 ef.data(), p.ConsumeIntegralInRange<uint32_t>(0, ec), angles.data());
     el_outline_destroy(outline);
 }
 }  // namespace

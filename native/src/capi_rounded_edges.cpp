@@ -1,5 +1,9 @@
-// C entry points for what the edge pass shades rounded edges with (shading_normals.hpp).
+// C entry points for what the edge pass shades rounded edges with (shading_normals.hpp) and the
+// corner patches where three of them meet (corner_patches.hpp) and where their bands end
+// (band_ends.hpp).
+#include "band_ends.hpp"
 #include "capi_common.hpp"
+#include "corner_patches.hpp"
 #include "shading_normals.hpp"
 
 #include <string>
@@ -45,6 +49,84 @@ EL_API el_status el_shading_normals(const float* positions, uint32_t vertex_coun
         require_finite_array(corner_normals, 9 * size_t(triangle_count), "corner_normals");
         el::shading_normals(el::ShadingInputs{positions, edges, edge_normals, edge_faces, tri_verts, corner_normals},
                             selected, count, max_turn_deg, out);
+    });
+}
+
+EL_API el_status el_corner_patches(const float* positions, uint32_t vertex_count, const uint32_t* edges,
+                                   const float* edge_normals, const uint8_t* convex, const uint8_t* chosen,
+                                   const float* radius, const uint8_t* stop, uint32_t edge_count, uint32_t capacity,
+                                   uint32_t* out_vertex, uint32_t* out_edges, float* out_normals, float* out_radius,
+                                   float* out_centre, float* out_fold, uint32_t* out_count) {
+    if (out_count) *out_count = 0;
+    return guarded("el_corner_patches", [&] {
+        require(out_count, "out_count");
+        if (edge_count == 0) return;
+        for (auto [p, name] : {std::pair<const void*, const char*>{positions, "positions"}, {edges, "edges"}, {edge_normals, "edge_normals"}, {convex, "convex"}, {chosen, "chosen"}, {radius, "radius"}})
+            require(p, name);
+        require_below(edges, 2 * size_t(edge_count), vertex_count, "edges", "vertex count");
+        require_finite_array(positions, 3 * size_t(vertex_count), "positions");
+        require_finite_array(edge_normals, 6 * size_t(edge_count), "edge_normals");
+        for (uint32_t e = 0; e < edge_count; ++e)  // the others' radii are not read (inf: no radius)
+            if (chosen[e] && !std::isfinite(radius[e]))
+                el::fail(EL_ERR_NON_FINITE, "radius[" + std::to_string(e) + "] of a chosen edge is not finite");
+        const auto corners = el::corner_patches(
+            el::CornerInputs{positions, vertex_count, edges, edge_normals, convex, chosen, radius, stop, edge_count});
+        *out_count = uint32_t(corners.size());
+        el::require_capacity(capacity, corners.size(), "capacity");
+        if (corners.empty()) return;
+        for (auto [p, name] : {std::pair<const void*, const char*>{out_vertex, "out_vertex"}, {out_edges, "out_edges"}, {out_normals, "out_normals"}, {out_radius, "out_radius"}, {out_centre, "out_centre"}, {out_fold, "out_fold"}})
+            require(p, name);
+        for (size_t k = 0; k < corners.size(); ++k) {
+            const el::CornerPatch& c = corners[k];
+            out_vertex[k] = c.vertex;
+            std::copy(c.edges, c.edges + 3, out_edges + 3 * k);
+            std::copy(c.normals, c.normals + 9, out_normals + 9 * k);
+            out_radius[k] = c.radius;
+            std::copy(c.centre, c.centre + 3, out_centre + 3 * k);
+            out_fold[k] = c.fold;
+        }
+    });
+}
+
+EL_API el_status el_band_ends(const el_polygons* polys, const float* positions, uint32_t vertex_count,
+                              const uint32_t* edges, const float* edge_normals, const uint8_t* rounded,
+                              const uint8_t* smooth, const int32_t* edge_polys, uint32_t edge_count,
+                              const uint32_t* selected, const int32_t* faces, uint32_t count, float* out) {
+    return guarded("el_band_ends", [&] {
+        if (count == 0) return;
+        require(polys, "polys");
+        for (auto [p, name] : {std::pair<const void*, const char*>{positions, "positions"}, {edges, "edges"}, {edge_normals, "edge_normals"}, {rounded, "rounded"}, {selected, "selected"}, {faces, "faces"}, {out, "out"}})
+            require(p, name);
+        const el_polygons& P = *polys;
+        if (P.loop_count) {
+            for (auto [p, name] : {std::pair<const void*, const char*>{P.start, "polys->start"}, {P.total, "polys->total"}, {P.loop_vert, "polys->loop_vert"}, {P.loop_edge, "polys->loop_edge"}, {P.tri_poly, "polys->tri_poly"}, {P.normal, "polys->normal"}})
+                require(p, name);
+        }
+        for (uint32_t k = 0; k < P.polygon_count; ++k)
+            if (P.total[k] < 1 || uint64_t(P.start[k]) + P.total[k] > P.loop_count)
+                el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "polygon " + std::to_string(k) + "'s loops " + std::to_string(P.start[k]) +
+                                                        " + " + std::to_string(P.total[k]) + " are not within the " +
+                                                        std::to_string(P.loop_count) + " loops (at least one each)");
+        require_below(P.loop_vert, P.loop_count, vertex_count, "polys->loop_vert", "vertex count");
+        require_below(P.loop_edge, P.loop_count, edge_count, "polys->loop_edge", "edge count");
+        require_below(P.tri_poly, P.triangle_count, P.polygon_count, "polys->tri_poly", "polygon count");
+        require_finite_array(P.normal, 3 * size_t(P.polygon_count), "polys->normal");
+        require_below(edges, 2 * size_t(edge_count), vertex_count, "edges", "vertex count");
+        require_below(selected, count, edge_count, "selected", "edge count");
+        require_finite_array(positions, 3 * size_t(vertex_count), "positions");
+        require_finite_array(edge_normals, 6 * size_t(edge_count), "edge_normals");
+        for (size_t i = 0; i < 2 * size_t(count); ++i)
+            if (faces[i] < -1 || (faces[i] >= 0 && uint32_t(faces[i]) >= P.triangle_count))
+                el::fail(EL_ERR_INDEX_OUT_OF_RANGE,
+                         "faces[" + std::to_string(i) + "] = " + std::to_string(faces[i]) + " is no triangle (nor -1)");
+        if (edge_polys)
+            for (size_t i = 0; i < 2 * size_t(edge_count); ++i)
+                if (edge_polys[i] < -1 || (edge_polys[i] >= 0 && uint32_t(edge_polys[i]) >= P.polygon_count))
+                    el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "edge_polys[" + std::to_string(i) + "] = " +
+                                                            std::to_string(edge_polys[i]) + " is no polygon (nor -1)");
+        el::band_ends(el::BandEndInputs{polys, positions, vertex_count, edges, edge_normals, rounded, smooth, edge_polys,
+                                        edge_count},
+                      selected, faces, count, out);
     });
 }
 

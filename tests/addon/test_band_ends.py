@@ -127,5 +127,41 @@ class BandEnds(unittest.TestCase):
             out = angles(positions, edges, polys, tris, one)
             self.assertTrue(np.any(np.isclose(cut_at_dip(out, sides[1]), math.pi / 2, atol=1e-6)), out[sides[1]])
 
+
+class AgainstTheReference(unittest.TestCase):
+    def test_the_library_ends_the_bands_as_the_reference_does(self):
+        """el_band_ends against the numpy it replaced (band_ends_reference.py): boxes, cut
+        boxes, prisms with acute and reflex corners and grid boxes (some jittered: facets folded
+        a few degrees, smooth patches to walk round), random subsets rounded, with and without
+        the smooth patches' fans: the same angles (within 1e-6)."""
+        import band_ends_reference as reference
+        from test_rounded_outline import grid_box
+        rng = np.random.default_rng(31)
+        meshes = [box(), box(cut=True), prism([(0, 0), (3, 0), (0, 1)]), prism([(0, 0), (2, 0), (2, 2), (1, 0.8), (0, 2)]),
+                  grid_box(2), grid_box(3)]
+        for n, jitter in ((2, 0.01), (3, 0.005)):
+            positions, edges, polys, tris = grid_box(n)
+            loops = [polys.loop_vert[a:a + k].tolist() for a, k in zip(polys.start, polys.total)]
+            meshes.append(mesh(positions + rng.normal(scale=jitter, size=positions.shape), loops))
+        mitred = square = 0
+        for positions, edges, polys, tris in meshes:
+            normals, faces = edge_frame(positions, edges, polys, tris)
+            fold = np.degrees(np.arccos(np.clip(np.einsum("ek,ek->e", normals[:, :3], normals[:, 3:]), -1.0, 1.0)))
+            edge_polys = np.where(faces >= 0, np.asarray(polys.tri_poly)[np.maximum(faces, 0)], -1)
+            for _ in range(6):
+                rounded = (fold > 30.0) & (rng.random(len(edges)) < 0.8)
+                sel = np.flatnonzero(rounded | (rng.random(len(edges)) < 0.1))
+                smooth = ~rounded & (fold < 30.0) & (faces >= 0).all(axis=1)
+                for fans in (False, True):
+                    args = (polys, positions, normals, edges, sel, faces[sel], rounded) + \
+                        ((smooth, edge_polys) if fans else ())
+                    got = band_ends.end_angles(*args)
+                    want = reference.end_angles(*args)
+                    np.testing.assert_allclose(got, want, atol=1e-6)
+                    mitred += int((np.abs(got - np.pi / 2) > 1e-3).sum())
+                    square += int((np.abs(got - np.pi / 2) <= 1e-3).sum())
+        self.assertGreater(mitred, 200)
+        self.assertGreater(square, 200)
+
 if __name__ == "__main__":
     unittest.main()

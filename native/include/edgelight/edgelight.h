@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 8u
+#define EL_ABI_VERSION 10u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -413,6 +413,50 @@ EL_API el_status el_fillet_outline(const float* na, const float* nb, const float
  * either end is missing or turned too far, or where taking them would turn the arc round (the
  * fold's sign about the edge). out: 12 floats a selected edge, (N1, N2) at its first vertex,
  * then at its second. */
+/* Corner patches (docs/highlight_math.md, "Corner patches"): the vertices where exactly three
+ * chosen edges meet, all convex or all concave, no other `stop` edge there (NULL: the chosen),
+ * whose fan falls into three sectors (each two edges' facing sides turning by under 40 degrees),
+ * not too near one plane, the ball's centre within 4 radii. Per corner, vertices ascending:
+ * out_vertex, out_edges (its three edges, ascending), out_normals (9: the sectors' unit normals,
+ * AB, BC, CA), out_radius (the smallest of its edges'), out_centre (3: the ball's, r under the
+ * three faces, or over them for concave edges), out_fold (+1 convex, -1 concave). edge_normals:
+ * 6 floats an edge (N1, N2, oriented alike); convex, chosen, stop: one byte an edge; radius: a
+ * chosen edge's (finite; the others' are not read). capacity:
+ * corners the outputs hold (vertex_count always suffices); *out_count is set also on
+ * EL_ERR_BUFFER_TOO_SMALL. */
+EL_API el_status el_corner_patches(const float* positions, uint32_t vertex_count, const uint32_t* edges,
+                                   const float* edge_normals, const uint8_t* convex, const uint8_t* chosen,
+                                   const float* radius, const uint8_t* stop, uint32_t edge_count, uint32_t capacity,
+                                   uint32_t* out_vertex, uint32_t* out_edges, float* out_normals, float* out_radius,
+                                   float* out_centre, float* out_fold, uint32_t* out_count);
+/* A mesh's polygons, as the host has them (Blender's): each one's loops, a loop's vertex and the
+ * edge from it to the next loop's, each loop triangle's polygon, each polygon's unit normal in
+ * the host's winding (zero: no area). */
+typedef struct el_polygons {
+    const uint32_t* start;      /* per polygon: its first loop */
+    const uint32_t* total;      /* per polygon: its loop count (at least 1) */
+    uint32_t polygon_count;
+    const uint32_t* loop_vert;  /* per loop */
+    const uint32_t* loop_edge;  /* per loop: an index into the edges of the call */
+    uint32_t loop_count;
+    const uint32_t* tri_poly;   /* per triangle */
+    uint32_t triangle_count;
+    const float* normal;        /* 3 per polygon */
+} el_polygons;
+
+/* Where each selected rounded edge's band ends on its two faces (docs/highlight_math.md, "Band
+ * ends"): 4 angles a selected edge, (at its first vertex on N1's face, on N2's, at its second on
+ * N1's, on N2's), the cut's angle from the edge towards the face's inside: pi/2 square, a mitre
+ * (half the face's corner) where the face's next side there is rounded too, leaning past the
+ * vertex (up to 3 pi/4) at a joint of one chain of rounded edges, the corner itself where it is
+ * sharper than square, never under 0.02. faces: 2 per selected edge, its triangles (-1 none).
+ * With smooth (a byte an edge) and edge_polys (2 per edge, its first two polygons, -1 none), a
+ * face is its smooth patch: the side at the vertex is the first round the fan not smooth, and a
+ * band whose fan comes back to its own edge ends square. */
+EL_API el_status el_band_ends(const el_polygons* polys, const float* positions, uint32_t vertex_count,
+                              const uint32_t* edges, const float* edge_normals, const uint8_t* rounded,
+                              const uint8_t* smooth, const int32_t* edge_polys, uint32_t edge_count,
+                              const uint32_t* selected, const int32_t* faces, uint32_t count, float* out);
 EL_API el_status el_shading_normals(const float* positions, uint32_t vertex_count, const uint32_t* edges,
                                     const float* edge_normals, const int32_t* edge_faces, uint32_t edge_count,
                                     const uint32_t* tri_verts, const float* corner_normals, uint32_t triangle_count,
