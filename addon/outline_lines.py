@@ -17,9 +17,9 @@ def outline_of(extract):
     """The mesh's convex rounded edges and corner patches as a native.Outline (the strip's own
     records: rounded_outline._edges and _corners), made once per extraction's chosen edges."""
     def compute(extract):
-        recs, _, verts = rounded_outline._edges(extract)
+        recs, _, verts = rounded_outline.edge_records(extract)
         known = np.all(verts >= 0, axis=1)
-        crecs, cverts = rounded_outline._corners(extract)
+        crecs, cverts = rounded_outline.corner_records(extract)
         return native.Outline(recs[known].reshape(-1, 4 * native.OUTLINE_EDGE_TEXELS), verts[known],
                               crecs.reshape(-1, 4 * native.OUTLINE_CORNER_TEXELS), cverts)
     return rounded_outline.from_edges(extract, "outline lines", compute)

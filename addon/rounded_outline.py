@@ -51,6 +51,17 @@ def from_edges(extract, name, compute):
     return memo[1]
 
 
+def edge_records(extract):
+    """_edges(extract), made once per extraction's chosen edges (the surface pass's textures and
+    the ink's el_outline read the same records)."""
+    return from_edges(extract, "outline edges", _edges)
+
+
+def corner_records(extract):
+    """_corners(extract), made once per extraction's chosen edges."""
+    return from_edges(extract, "outline corners", _corners)
+
+
 def layout_defines():
     """The texture layout (shaders/outline_layout.json), as the surface program's defines
     (shaders/rounded_outline.glsl)."""
@@ -360,7 +371,7 @@ def records(extract):
     cross one of their triangles; None without convex rounded edges. A triangle lists its own
     sides first, then the nearest."""
     slots = list(extract.slot_triangles.items())
-    edges, faces, verts = _edges(extract)
+    edges, faces, verts = edge_records(extract)
     if not slots or not len(edges):
         return None
     order = np.concatenate([tris for _, tris in slots])  # batch position -> triangle
@@ -375,7 +386,7 @@ def records(extract):
     # farther than that; past the setback every face lies inside the fillet's outline.
     setback = edges[:, 0, 3] * np.sqrt(1.0 - cos_half * cos_half) / cos_half
     p0, p1 = edges[:, 2, :3].astype(np.float64), edges[:, 3, :3].astype(np.float64)
-    corners, cverts = _corners(extract)
+    corners, cverts = corner_records(extract)
     reach = np.linalg.norm(corners[:, 0, :3] - corners[:, 1, :3], axis=1)
     d = extract.edge_data
     tri_verts = getattr(d, "tri_verts", None) if d is not None else None

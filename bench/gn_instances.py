@@ -2,12 +2,12 @@
 Points on a grid) against the same geometry realised into one mesh (Realize Instances), and the
 process's peak memory (issue 41: 10,000 instances at most 1.5x the realised mesh, peak under
 1.5 GB). Lines on, 1 sample, 640 x 480, Persistent Data off, best of `--repeat` after a warm-up.
-Each mode runs in its own Blender, so that each peak is its own:
+Each mode runs in its own Blender, so that each peak is its own: `--mode both` (the default)
+starts one for each and prints the table; --write rewrites its section of BENCHMARKS.md
+(bench/bench_table.py).
 
-    for mode in instanced realized; do
-      BLENDER_USER_SCRIPTS=$(scripts/install_addon.sh) blender -b --factory-startup --addons edgelight \\
-          --python bench/gn_instances.py -- --count 10000 --mode $mode
-    done
+    BLENDER_USER_SCRIPTS=$(scripts/install_addon.sh) blender -b --factory-startup --addons edgelight \\
+        --python bench/gn_instances.py -- --count 10000 --repeat 3 [--write]
 """
 import argparse
 import resource
@@ -65,9 +65,13 @@ def main():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     ap = argparse.ArgumentParser()
     ap.add_argument("--count", type=int, default=10000)
-    ap.add_argument("--mode", choices=("instanced", "realized"), default="instanced")
-    ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--mode", choices=("instanced", "realized", "both"), default="both")
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--write", action="store_true", help="rewrite BENCHMARKS.md's section with the table")
     args = ap.parse_args(argv)
+    if args.mode == "both":
+        both(args)
+        return
     scene(args.count, args.mode == "realized")
     bpy.context.scene.render.engine = 'EDGELIGHT'
     bpy.ops.render.render()
@@ -78,6 +82,38 @@ def main():
         times.append(time.perf_counter() - t)
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     print(f"| {args.count} | {args.mode} | {min(times):.2f} s | {peak:.0f} MB |", flush=True)
+
+
+
+def both(args):
+    """Each mode in a Blender of its own (this one's binary, add-ons and environment): the table."""
+    import os
+    import subprocess
+    rows = ["| instances | mode | EdgeLight, lines on | peak memory |", "|---|---|---|---|"]
+    for mode in ("instanced", "realized"):
+        run = subprocess.run([bpy.app.binary_path, "-b", "--factory-startup", "--addons", "edgelight", "--python",
+                              os.path.abspath(__file__), "--", "--count", str(args.count), "--mode", mode,
+                              "--repeat", str(args.repeat)], capture_output=True, text=True, check=True)
+        rows += [line for line in run.stdout.splitlines() if line.startswith(f"| {args.count} | {mode} |")][:1]
+    print("\n".join(rows), flush=True)
+    if args.write:
+        import datetime
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import bench_table
+        bench_table.rewrite("gn_instances", f"""A final render of {args.count:,} Geometry Nodes cube instances against the same geometry realised
+into one mesh, and each process's peak memory (issue 41's targets: 1.5×, 1.5 GB).
+
+Command:
+
+    BLENDER_USER_SCRIPTS=$(scripts/install_addon.sh) blender -b --factory-startup --addons edgelight \\
+        --python bench/gn_instances.py -- --count {args.count} --repeat {args.repeat} --write
+
+Run of {datetime.date.today().isoformat()}, Blender {bpy.app.version_string}; 640 × 480, 1 sample,
+Persistent Data off, best of {args.repeat} after a warm-up, each mode in its own Blender.
+
+""" + "\n".join(rows) + """
+
+History and method: docs/benchmark_history.md, "Geometry Nodes instances with ink, against the same geometry realised".""")
 
 
 main()

@@ -4,7 +4,9 @@ artists' scenes of many parts are; lines on, 1 sample, 640 x 480, best of `--rep
 warm-up, Persistent Data off (every render extracts afresh).
 
     BLENDER_USER_SCRIPTS=$(scripts/install_addon.sh) blender -b --factory-startup --addons edgelight \\
-        --python bench/many_objects.py -- --counts 300 1000 --repeat 3
+        --python bench/many_objects.py -- --counts 300 1000 --repeat 3 [--write]
+
+--write rewrites its section of BENCHMARKS.md (bench/bench_table.py).
 """
 import argparse
 import sys
@@ -56,14 +58,41 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--counts", type=int, nargs="+", default=[300, 1000])
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--write", action="store_true", help="rewrite BENCHMARKS.md's section with the table")
     args = ap.parse_args(argv)
-    print("| separate cubes | EdgeLight, lines on | Workbench | ratio |")
-    print("|---|---|---|---|")
+    rows = ["| separate cubes | EdgeLight, lines on | Workbench | ratio |", "|---|---|---|---|"]
+    print("\n".join(rows))
     for count in args.counts:
         scene(count)
         ours = best('EDGELIGHT', args.repeat)
         theirs = best('BLENDER_WORKBENCH', args.repeat)
-        print(f"| {count} | {ours:.2f} s | {theirs:.2f} s | {ours / theirs:.1f}x |", flush=True)
+        rows.append(f"| {count} | {ours:.2f} s | {theirs:.2f} s | {ours / theirs:.1f}x |")
+        print(rows[-1], flush=True)
+    if args.write:
+        write(rows, args)
+
+
+def write(rows, args):
+    """BENCHMARKS.md's section (bench/bench_table.py) with this run's table."""
+    import datetime
+    import os
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import bench_table
+    text = f"""A final render of many cubes, each its own object with its own copy of the mesh, lines on,
+against Workbench (issue 41's target: 3×).
+
+Command:
+
+    BLENDER_USER_SCRIPTS=$(scripts/install_addon.sh) blender -b --factory-startup --addons edgelight \\
+        --python bench/many_objects.py -- --counts {' '.join(map(str, args.counts))} --repeat {args.repeat} --write
+
+Run of {datetime.date.today().isoformat()}, Blender {bpy.app.version_string}; 640 × 480, 1 sample,
+Persistent Data off, best of {args.repeat} after a warm-up.
+
+""" + "\n".join(rows) + """
+
+History and method: docs/benchmark_history.md, "Many separate objects with ink, against Workbench"."""
+    bench_table.rewrite("many_objects", text)
 
 
 main()
