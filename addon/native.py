@@ -569,6 +569,8 @@ def view_lines(mesh, views, outline=None, edge_faces=None, taper=False):
     lib = mesh._lib
     views = np.ascontiguousarray(views, OUTLINE_VIEW)
     faces = _contiguous(edge_faces, np.float32, 2)
+    if faces is not None and len(faces) != mesh.info()["edge_count"]:
+        raise ValueError(f"view_lines: {len(faces)} face pairs for {mesh.info()['edge_count']} edges")
     desc = ViewLinesDesc(mesh._h.value, outline._h.value if outline is not None else None, _address(faces),
                          _address(views), len(views), VIEW_LINES_TAPER if taper else 0)
     handle = _P()
@@ -601,6 +603,8 @@ def outline_fans(tri_verts, tri_normals, item_verts, item_normals, per, cos_max,
     lib = lib or load()
     tv = _contiguous(tri_verts, np.uint32, 3)
     tn = _contiguous(tri_normals, np.float32, 3)
+    if len(tn) != len(tv):
+        raise ValueError(f"outline_fans: {len(tv)} triangles with {len(tn)} normals")
     iv = np.ascontiguousarray(item_verts, np.int32)
     normals = np.ascontiguousarray(item_normals, np.float32)
     out = np.zeros((len(tv), per), np.float32)
@@ -649,6 +653,9 @@ def band_ends(polys, positions, edges, edge_normals, rounded, selected, faces, s
     lib = lib or load()
     keep = {k: _contiguous(getattr(polys, k), np.uint32) for k in ("start", "total", "loop_vert", "loop_edge", "tri_poly")}
     keep["normal"] = _contiguous(polys.normal, np.float32, 3)
+    if not (len(keep["total"]) == len(keep["start"]) == len(keep["normal"]) and len(keep["loop_edge"]) == len(keep["loop_vert"])):
+        raise ValueError(f"band_ends: {len(keep['start'])} polygon starts, {len(keep['total'])} totals, "
+                         f"{len(keep['normal'])} normals; {len(keep['loop_vert'])} loop vertices, {len(keep['loop_edge'])} loop edges")
     pd = Polygons(_ptr(keep["start"], ctypes.c_uint32), _ptr(keep["total"], ctypes.c_uint32), len(keep["start"]),
                   _ptr(keep["loop_vert"], ctypes.c_uint32), _ptr(keep["loop_edge"], ctypes.c_uint32),
                   len(keep["loop_vert"]), _ptr(keep["tri_poly"], ctypes.c_uint32), len(keep["tri_poly"]),

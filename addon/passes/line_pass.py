@@ -137,17 +137,19 @@ def view_line_batches(per_instance, chunk=None):
     lines.view_lines). Each type's sets of all instances share one record texture and one face
     texture, written by one library call, each instance drawing its own range of them: a scene
     of many objects uploads two textures a type per frame, not two per object. Sets without
-    chain records, or too many segments for one texture, get textures of their own."""
+    chain records, or too many segments for one texture or one library call, get textures of
+    their own."""
     out = [{} for _ in per_instance]
     kinds = [k for k in dict.fromkeys(k for segs in per_instance for k in segs)]
     for kind in kinds:
         parts = [(i, segs[kind]) for i, segs in enumerate(per_instance) if kind in segs and len(segs[kind])]
         total = sum(len(s) for _, s in parts)
         rows = -(-total // NODES_PER_ROW)
-        if len(parts) < 2 or any(s.chain_links is None for _, s in parts) \
+        # el_line_nodes takes under 2^24 segments a call (places exact as floats).
+        if len(parts) < 2 or any(s.chain_links is None for _, s in parts) or total >= 1 << 24 \
                 or rows > gpu.capabilities.max_texture_size_get():
             for i, s in parts:
-                out[i][kind] = LineSet(s, chunk)
+                out[i][kind] = LineSet(s, chunk, chain_spheres=False)
             continue
         links = np.concatenate([s.chain_links for _, s in parts])
         # Each instance's chains after the last one's: chain order keeps each instance's
@@ -161,7 +163,7 @@ def view_line_batches(per_instance, chunk=None):
         part_of = np.repeat(np.arange(len(parts)), [len(s) for _, s in parts])
         if np.any(np.diff(part_of[order]) < 0):  # chain order that mixed instances: not shared
             for i, s in parts:
-                out[i][kind] = LineSet(s, chunk)
+                out[i][kind] = LineSet(s, chunk, chain_spheres=False)
             continue
         nodes_tex, faces_tex = _textures(nodes.reshape(-1, NODE_TEXELS, 4),
                                          np.ascontiguousarray(np.concatenate(faces).astype(np.float32)[order]))

@@ -42,21 +42,25 @@ def view_line_segments(scene, camera, line_settings, counters=None, rounded=Fals
         extract = scene.instances[drawn[0]].mesh
         if counters is not None:
             counters.view_calls += len(drawn)
+        failed = set()  # an instance the library refused is reported once
         if "silhouette" in kinds:
             taper = line_settings.style("silhouette").taper > 0.0
             for i, seg in zip(drawn, _silhouettes(scene, extract, [scene.instances[i].matrix for i in drawn],
                                                    camera, taper, rounded)):
                 if isinstance(seg, str):
                     _report(scene, f"{extract.name}: no silhouettes or contours ({seg})")
+                    failed.add(i)
                 else:
                     out[i]["silhouette"] = seg
         if "contour" in kinds:
             for i in drawn:
+                if i in failed:
+                    continue
                 inst = scene.instances[i]
                 try:
                     out[i]["contour"] = ink.contours(extract, index[i], inst.matrix, camera, line_settings)
                 except native.NativeError as e:
-                    _report(scene, f"{extract.name}: no silhouettes or contours ({e.message})")
+                    _report(scene, f"{extract.name}: no silhouettes or contours ({e.status}: {e.message})")
     return out
 
 

@@ -98,10 +98,17 @@ EL_API el_status el_band_ends(const el_polygons* polys, const float* positions, 
         for (auto [p, name] : {std::pair<const void*, const char*>{positions, "positions"}, {edges, "edges"}, {edge_normals, "edge_normals"}, {rounded, "rounded"}, {selected, "selected"}, {faces, "faces"}, {out, "out"}})
             require(p, name);
         const el_polygons& P = *polys;
-        if (P.loop_count) {
-            for (auto [p, name] : {std::pair<const void*, const char*>{P.start, "polys->start"}, {P.total, "polys->total"}, {P.loop_vert, "polys->loop_vert"}, {P.loop_edge, "polys->loop_edge"}, {P.tri_poly, "polys->tri_poly"}, {P.normal, "polys->normal"}})
-                require(p, name);
+        // Each array where its count says it has elements.
+        if (P.polygon_count) {
+            require(P.start, "polys->start");
+            require(P.total, "polys->total");
+            require(P.normal, "polys->normal");
         }
+        if (P.loop_count) {
+            require(P.loop_vert, "polys->loop_vert");
+            require(P.loop_edge, "polys->loop_edge");
+        }
+        if (P.triangle_count) require(P.tri_poly, "polys->tri_poly");
         for (uint32_t k = 0; k < P.polygon_count; ++k)
             if (P.total[k] < 1 || uint64_t(P.start[k]) + P.total[k] > P.loop_count)
                 el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "polygon " + std::to_string(k) + "'s loops " + std::to_string(P.start[k]) +

@@ -8,13 +8,14 @@ namespace el {
 void outline_fans(const uint32_t* tri_verts, const float* tri_normals, uint32_t triangle_count, const FanItems& items,
                   float cos_max, uint32_t per, float* out) {
     std::fill(out, out + size_t(triangle_count) * per, 0.0f);
-    // The items at each vertex, in item order (CSR over the vertices items name).
+    // The items at each vertex, in item order (CSR over the triangles' vertices: an item at a
+    // vertex no triangle has is at no triangle's corner).
     uint32_t vmax = 0;
-    for (size_t k = 0; k < size_t(items.count) * items.verts_per_item; ++k)
-        if (items.verts[k] >= 0) vmax = std::max(vmax, uint32_t(items.verts[k]) + 1);
+    for (size_t k = 0; k < 3 * size_t(triangle_count); ++k) vmax = std::max(vmax, tri_verts[k] + 1);
+    auto listed = [&](int32_t v) { return v >= 0 && uint32_t(v) < vmax; };
     std::vector<uint32_t> start(size_t(vmax) + 1, 0), at_vertex;
     for (size_t k = 0; k < size_t(items.count) * items.verts_per_item; ++k)
-        if (items.verts[k] >= 0) ++start[size_t(items.verts[k]) + 1];
+        if (listed(items.verts[k])) ++start[size_t(items.verts[k]) + 1];
     for (size_t v = 0; v < vmax; ++v) start[v + 1] += start[v];
     at_vertex.resize(start[vmax]);
     {
@@ -22,7 +23,7 @@ void outline_fans(const uint32_t* tri_verts, const float* tri_normals, uint32_t 
         for (uint32_t i = 0; i < items.count; ++i)
             for (uint32_t j = 0; j < items.verts_per_item; ++j) {
                 const int32_t v = items.verts[size_t(i) * items.verts_per_item + j];
-                if (v >= 0) at_vertex[fill[size_t(v)]++] = i;
+                if (listed(v)) at_vertex[fill[size_t(v)]++] = i;
             }
     }
     std::vector<uint32_t> own, other;

@@ -15,7 +15,7 @@ namespace el {
 
 namespace {
 
-// Instances a thread takes at a time; below twice this a call runs on the caller's thread.
+// Instances a thread takes at least; a call of up to this many runs on the caller's thread.
 constexpr uint32_t kInstancesPerTask = 64;
 
 void require_finite_array(const float* a, size_t count, const char* name) {
@@ -139,16 +139,23 @@ ViewLines view_lines(const MeshData& mesh, const OutlineRecords* outline, const 
         return out;
     }
     std::vector<std::thread> pool;
+    pool.reserve(threads);
     std::vector<std::exception_ptr> failed(threads);
     const uint32_t per = (view_count + threads - 1) / threads;
-    for (uint32_t t = 0; t < threads; ++t)
-        pool.emplace_back([&, t] {
-            try {
-                run(std::min(view_count, t * per), std::min(view_count, (t + 1) * per));
-            } catch (...) {
-                failed[t] = std::current_exception();  // out of memory, say: the call fails
-            }
-        });
+    auto task = [&](uint32_t t) {
+        try {
+            run(std::min(view_count, t * per), std::min(view_count, (t + 1) * per));
+        } catch (...) {
+            failed[t] = std::current_exception();  // out of memory, say: the call fails
+        }
+    };
+    uint32_t started = 0;
+    try {
+        for (; started < threads; ++started) pool.emplace_back(task, started);
+    } catch (...) {
+        // No more threads to be had: the caller's thread takes the ranges not started.
+    }
+    for (uint32_t t = started; t < threads; ++t) task(t);
     for (auto& th : pool) th.join();
     for (auto& f : failed)
         if (f) std::rethrow_exception(f);

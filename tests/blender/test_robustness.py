@@ -77,6 +77,10 @@ class BadMeshes(unittest.TestCase):
         self.assertIn("Flat: no silhouettes or contours (EL_ERR_INVALID_ARGUMENT: object_to_world is not an invertible",
                       messages(rec))
         self.assertGreater(rec["stats"].lines_drawn, 0, "the cube's lines are still drawn")
+        # With contours too, the refused instance is reported once.
+        bpy.context.scene.edgelight.line_contour.enabled = True
+        rec = self.render_ok()
+        self.assertEqual(messages(rec).count("Flat: no silhouettes or contours"), 1, messages(rec))
 
     def test_no_material(self):
         bpy.data.objects["Cube"].data.materials.clear()

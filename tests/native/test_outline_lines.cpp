@@ -207,3 +207,38 @@ TEST(OutlineLines, FansListOwnSidesFirstAndCheckTheirInputs) {
     expect_fails(el_outline_fans(tris, tri_n, 2, items, 2, item_n, 2, 3, 8, 0.866f, 4, out), EL_ERR_INVALID_ARGUMENT,
                  "flags");
 }
+
+TEST(OutlineLines, FansIgnoreItemsAtVerticesNoTriangleHas) {
+    // An item at vertex 2^31 - 1 (no triangle's): listed nowhere, and no index over it is made.
+    const uint32_t tris[3] = {0, 1, 2};
+    const float tri_n[3] = {0, 0, 1};
+    const int32_t items[2] = {2147483647, 1};
+    const float item_n[6] = {0, 0, 1, 0, 0, 1};
+    float out[2] = {-1, -1};
+    ASSERT_EQ(el_outline_fans(tris, tri_n, 1, items, 1, item_n, 1, 2, 0, 0.866f, 2, out), EL_OK) << el_last_error();
+    EXPECT_EQ(out[0], 2.0f);  // item 1, at the triangle's corner 1
+    EXPECT_EQ(out[1], 0.0f);
+}
+
+TEST(BandEnds, PolygonArraysAreRequiredWhereTheirCountsSayTheyHaveElements) {
+    const float positions[6] = {0, 0, 0, 1, 0, 0};
+    const uint32_t edges[2] = {0, 1};
+    const float normals[6] = {0, 0, 1, 0, -1, 0};
+    const uint8_t rounded[1] = {1};
+    const uint32_t selected[1] = {0};
+    const int32_t faces[2] = {-1, -1};
+    float out[4];
+    el_polygons polys{};
+    polys.polygon_count = 1;  // no start, total or normal for it
+    expect_fails(el_band_ends(&polys, positions, 2, edges, normals, rounded, nullptr, nullptr, 1, selected, faces, 1, out),
+                 EL_ERR_NULL_POINTER, "polys->start");
+    polys.polygon_count = 0;
+    polys.triangle_count = 1;
+    expect_fails(el_band_ends(&polys, positions, 2, edges, normals, rounded, nullptr, nullptr, 1, selected, faces, 1, out),
+                 EL_ERR_NULL_POINTER, "polys->tri_poly");
+    polys.triangle_count = 0;  // no polygons at all: every band ends square
+    ASSERT_EQ(el_band_ends(&polys, positions, 2, edges, normals, rounded, nullptr, nullptr, 1, selected, faces, 1, out),
+              EL_OK)
+        << el_last_error();
+    for (float a : out) EXPECT_FLOAT_EQ(a, 1.5707964f);
+}

@@ -344,7 +344,7 @@ typedef struct el_outline_view {
 
 /* Line segments of one type, object space, with what the line pass draws them with. Input:
  * count segments; vertices[2 i], [2 i + 1] the mesh vertices of segment i's p0 and p1. faces and
- * links are optional (NULL), taken and given together in and out. */
+ * links are each optional (NULL); each is given out where it is given in. */
 typedef struct el_outline_segments {
     const uint32_t* vertices;
     const float* p0;              /* 3 per segment */
@@ -404,15 +404,6 @@ EL_API el_status el_fillet_outline(const float* na, const float* nb, const float
 /* Rounded edges: what the edge pass shades a band with                                         */
 /* ------------------------------------------------------------------------------------------ */
 
-/* The two normals each selected rounded edge's arc runs between at each of its ends, as the
- * mesh gives them (edge_normals: N1, N2, 6 floats an edge, the faces' own), each turned to the
- * normal its side is shaded with there: the corner normal (corner_normals, 9 floats a triangle,
- * its corners in tri_verts order) of that side's triangle (edge_faces: the edge's first two
- * triangles, -1 none) at that end, signed as the library's normal, where it lies within
- * max_turn_deg of it. An edge keeps its faces' normals at both ends where a corner normal at
- * either end is missing or turned too far, or where taking them would turn the arc round (the
- * fold's sign about the edge). out: 12 floats a selected edge, (N1, N2) at its first vertex,
- * then at its second. */
 /* Corner patches (docs/highlight_math.md, "Corner patches"): the vertices where exactly three
  * chosen edges meet, all convex or all concave, no other `stop` edge there (NULL: the chosen),
  * whose fan falls into three sectors (each two edges' facing sides turning by under 40 degrees),
@@ -421,14 +412,14 @@ EL_API el_status el_fillet_outline(const float* na, const float* nb, const float
  * AB, BC, CA), out_radius (the smallest of its edges'), out_centre (3: the ball's, r under the
  * three faces, or over them for concave edges), out_fold (+1 convex, -1 concave). edge_normals:
  * 6 floats an edge (N1, N2, oriented alike); convex, chosen, stop: one byte an edge; radius: a
- * chosen edge's (finite; the others' are not read). capacity:
- * corners the outputs hold (vertex_count always suffices); *out_count is set also on
- * EL_ERR_BUFFER_TOO_SMALL. */
+ * chosen edge's (finite; the others' are not read). capacity: corners the outputs hold
+ * (vertex_count always suffices); *out_count is set also on EL_ERR_BUFFER_TOO_SMALL. */
 EL_API el_status el_corner_patches(const float* positions, uint32_t vertex_count, const uint32_t* edges,
                                    const float* edge_normals, const uint8_t* convex, const uint8_t* chosen,
                                    const float* radius, const uint8_t* stop, uint32_t edge_count, uint32_t capacity,
                                    uint32_t* out_vertex, uint32_t* out_edges, float* out_normals, float* out_radius,
                                    float* out_centre, float* out_fold, uint32_t* out_count);
+
 /* A mesh's polygons, as the host has them (Blender's): each one's loops, a loop's vertex and the
  * edge from it to the next loop's, each loop triangle's polygon, each polygon's unit normal in
  * the host's winding (zero: no area). */
@@ -457,6 +448,16 @@ EL_API el_status el_band_ends(const el_polygons* polys, const float* positions, 
                               const uint32_t* edges, const float* edge_normals, const uint8_t* rounded,
                               const uint8_t* smooth, const int32_t* edge_polys, uint32_t edge_count,
                               const uint32_t* selected, const int32_t* faces, uint32_t count, float* out);
+
+/* The two normals each selected rounded edge's arc runs between at each of its ends, as the
+ * mesh gives them (edge_normals: N1, N2, 6 floats an edge, the faces' own), each turned to the
+ * normal its side is shaded with there: the corner normal (corner_normals, 9 floats a triangle,
+ * its corners in tri_verts order) of that side's triangle (edge_faces: the edge's first two
+ * triangles, -1 none) at that end, signed as the library's normal, where it lies within
+ * max_turn_deg of it. An edge keeps its faces' normals at both ends where a corner normal at
+ * either end is missing or turned too far, or where taking them would turn the arc round (the
+ * fold's sign about the edge). out: 12 floats a selected edge, (N1, N2) at its first vertex,
+ * then at its second. */
 EL_API el_status el_shading_normals(const float* positions, uint32_t vertex_count, const uint32_t* edges,
                                     const float* edge_normals, const int32_t* edge_faces, uint32_t edge_count,
                                     const uint32_t* tri_verts, const float* corner_normals, uint32_t triangle_count,
@@ -487,8 +488,10 @@ typedef struct el_view_lines_desc {
  * chain's nearest free end over the chain's length, or EL_NO_TAPER), its faces (edge_faces) and
  * its chain record (chains of the instance's own silhouettes, el_mesh_chain_edges'), moved onto
  * the rounded outline with an outline (el_outline_lines). Instances run in parallel. An
- * instance whose view fails (a singular transform, say) gets no segments and its status in
- * el_view_lines_get_offsets' out_status; the call fails only for bad arguments. */
+ * instance whose own transform the view refuses (singular, say) gets no segments, its status in
+ * el_view_lines_get_offsets' out_status and its message from el_view_lines_get_message; the call
+ * fails for bad arguments, with an outline also for any view whose camera is unusable (its
+ * projection, size or matrices). */
 EL_API el_status el_view_lines_create(const el_view_lines_desc* desc, el_view_lines** out_lines);
 EL_API void el_view_lines_destroy(el_view_lines* lines);
 /* out_offsets: view_count + 1 values, instance i's segments are [offsets[i], offsets[i + 1]);
