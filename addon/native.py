@@ -10,7 +10,7 @@ import numpy as np
 
 from . import library_check, platforms
 
-ABI_VERSION = 10
+ABI_VERSION = 11
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -211,6 +211,8 @@ _SIGNATURES = {
     "el_band_ends": [ctypes.POINTER(Polygons), _f32p, ctypes.c_uint32, _u32p, _f32p, _u8p, _u8p,
                      ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32, _u32p, ctypes.POINTER(ctypes.c_int32),
                      ctypes.c_uint32, _f32p],
+    "el_width_bounds": [ctypes.POINTER(Polygons), _f32p, ctypes.c_uint32, _u32p, ctypes.POINTER(ctypes.c_int32),
+                        ctypes.c_uint32, ctypes.POINTER(ctypes.c_double)],
     "el_shading_normals": [_f32p, ctypes.c_uint32, _u32p, _f32p, ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32,
                            _u32p, _f32p, ctypes.c_uint32, _u32p, ctypes.c_uint32, ctypes.c_float, _f32p],
     "el_fillet_outline": [_f32p, _f32p, _f32p, ctypes.c_uint32, _f32p, _f32p, _u8p],
@@ -643,6 +645,39 @@ def corner_patches(positions, edges, edge_normals, convex, chosen, radius, stop=
     return {k: a[:count.value] for k, a in out.items()}
 
 
+def _polygons(polys):
+    """(Polygons, the arrays it points into) of radius_clamp.Polygons `polys`."""
+    keep = {k: _contiguous(getattr(polys, k), np.uint32) for k in ("start", "total", "loop_vert", "loop_edge", "tri_poly")
+            if getattr(polys, k) is not None}
+    keep["normal"] = _contiguous(polys.normal, np.float32, 3)
+    n = {k: len(a) for k, a in keep.items() if a is not None}
+    if n.get("total", 0) != n.get("start", 0) or ("normal" in n and n["normal"] != n["start"]) \
+            or ("loop_edge" in n and n["loop_edge"] != n.get("loop_vert", 0)):
+        raise ValueError(f"polygons of inconsistent lengths: {n}")
+    pd = Polygons(_ptr(keep.get("start"), ctypes.c_uint32), _ptr(keep.get("total"), ctypes.c_uint32), n.get("start", 0),
+                  _ptr(keep.get("loop_vert"), ctypes.c_uint32), _ptr(keep.get("loop_edge"), ctypes.c_uint32),
+                  n.get("loop_vert", 0), _ptr(keep.get("tri_poly"), ctypes.c_uint32), n.get("tri_poly", 0),
+                  _ptr(keep.get("normal"), ctypes.c_float))
+    return pd, keep
+
+
+def width_bounds(polys, positions, edges, edge_polys, lib=None):
+    """el_width_bounds: (N, 2) float64, for edges (N, 2) vertex pairs whose polygons are
+    edge_polys (N, 2) (-1: none, 0), the farthest of three of each polygon's corners from the
+    edge's line."""
+    lib = lib or load()
+    pd, keep = _polygons(polys)
+    p = _contiguous(positions, np.float32, 3)
+    e = _contiguous(edges, np.uint32, 2)
+    ep = np.ascontiguousarray(edge_polys, np.int32).reshape(-1, 2)
+    if len(ep) != len(e):
+        raise ValueError(f"width_bounds: {len(e)} edges with {len(ep)} polygon pairs")
+    out = np.zeros((len(e), 2), np.float64)
+    lib.call("el_width_bounds", ctypes.byref(pd), _ptr(p, ctypes.c_float), len(p), _ptr(e, ctypes.c_uint32),
+             ep.ctypes.data_as(ctypes.POINTER(ctypes.c_int32)), len(e), out.ctypes.data_as(ctypes.POINTER(ctypes.c_double)))
+    return out
+
+
 def band_ends(polys, positions, edges, edge_normals, rounded, selected, faces, smooth=None, edge_polys=None,
               lib=None):
     """el_band_ends: (N, 4) float32 cut angles of the selected edges' bands. polys: the mesh's
@@ -651,15 +686,7 @@ def band_ends(polys, positions, edges, edge_normals, rounded, selected, faces, s
     (N, 2) their triangles (-1 none); smooth (E,) bool and edge_polys (E, 2): faces as smooth
     patches."""
     lib = lib or load()
-    keep = {k: _contiguous(getattr(polys, k), np.uint32) for k in ("start", "total", "loop_vert", "loop_edge", "tri_poly")}
-    keep["normal"] = _contiguous(polys.normal, np.float32, 3)
-    if not (len(keep["total"]) == len(keep["start"]) == len(keep["normal"]) and len(keep["loop_edge"]) == len(keep["loop_vert"])):
-        raise ValueError(f"band_ends: {len(keep['start'])} polygon starts, {len(keep['total'])} totals, "
-                         f"{len(keep['normal'])} normals; {len(keep['loop_vert'])} loop vertices, {len(keep['loop_edge'])} loop edges")
-    pd = Polygons(_ptr(keep["start"], ctypes.c_uint32), _ptr(keep["total"], ctypes.c_uint32), len(keep["start"]),
-                  _ptr(keep["loop_vert"], ctypes.c_uint32), _ptr(keep["loop_edge"], ctypes.c_uint32),
-                  len(keep["loop_vert"]), _ptr(keep["tri_poly"], ctypes.c_uint32), len(keep["tri_poly"]),
-                  _ptr(keep["normal"], ctypes.c_float))
+    pd, keep = _polygons(polys)
     p = _contiguous(positions, np.float32, 3)
     e = _contiguous(edges, np.uint32, 2)
     n = _contiguous(edge_normals, np.float32, 6)

@@ -12,6 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import native
+
 # Pairs (edge, polygon corner) expanded at once: bounds the temporary arrays on dense meshes.
 _CHUNK = 1 << 21
 # Folds no larger than this are facets of one smooth patch: a fillet runs on across them.
@@ -147,19 +149,11 @@ def width_bounds(polys, positions, edges, edge_polys):
     """(N, 2) a lower bound of widths() for edges (N, 2) whose polygons are edge_polys (N, 2)
     (-1: none, bound 0): the farthest from the edge's line of three of the polygon's corners
     (the first, and a third and two thirds of the way round), found without expanding every
-    corner. An edge whose fillets need no more than this is not clamped."""
-    out = np.zeros(edge_polys.shape)
-    a = positions[edges[:, 0]].astype(np.float64)
-    d = positions[edges[:, 1]].astype(np.float64) - a
-    length = np.maximum(np.linalg.norm(d, axis=1), 1e-30)
-    for side in range(2):
-        has = np.flatnonzero(edge_polys[:, side] >= 0)
-        p = edge_polys[has, side]
-        for k in range(3):
-            corner = polys.start[p] + (k * polys.total[p]) // 3
-            v = positions[polys.loop_vert[corner]].astype(np.float64) - a[has]
-            out[has, side] = np.maximum(out[has, side], np.linalg.norm(np.cross(d[has], v), axis=1) / length[has])
-    return out
+    corner (the library's el_width_bounds). An edge whose fillets need no more than this is not
+    clamped."""
+    if not len(edges):
+        return np.zeros((0, 2))
+    return native.width_bounds(polys, positions, edges, edge_polys)
 
 
 def setback(angle_deg):

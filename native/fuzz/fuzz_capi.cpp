@@ -453,6 +453,9 @@ void fuzz_outline(FuzzedDataProvider& p) {
     el_band_ends(p.ConsumeIntegralInRange<int>(0, 15) ? &polys : nullptr, pos.data(), 8, ev.data(), edges.data(),
                  chosen.data(), fans ? stops.data() : nullptr, fans ? epolys.data() : nullptr, ec, sel.data(),
                  ef.data(), p.ConsumeIntegralInRange<uint32_t>(0, ec), angles.data());
+    std::vector<double> widths(2 * size_t(ec) + 1);
+    el_width_bounds(p.ConsumeIntegralInRange<int>(0, 15) ? &polys : nullptr, pos.data(), 8, ev.data(), epolys.data(),
+                    p.ConsumeIntegralInRange<uint32_t>(0, ec), widths.data());
     el_outline_destroy(outline);
 }
 }  // namespace

@@ -4,6 +4,7 @@
 #include "band_ends.hpp"
 #include "capi_common.hpp"
 #include "corner_patches.hpp"
+#include "radius_clamp.hpp"
 #include "shading_normals.hpp"
 
 #include <string>
@@ -134,6 +135,34 @@ EL_API el_status el_band_ends(const el_polygons* polys, const float* positions, 
         el::band_ends(el::BandEndInputs{polys, positions, vertex_count, edges, edge_normals, rounded, smooth, edge_polys,
                                         edge_count},
                       selected, faces, count, out);
+    });
+}
+
+EL_API el_status el_width_bounds(const el_polygons* polys, const float* positions, uint32_t vertex_count,
+                                 const uint32_t* edges, const int32_t* edge_polys, uint32_t count, double* out) {
+    return guarded("el_width_bounds", [&] {
+        if (count == 0) return;
+        require(polys, "polys");
+        for (auto [p, name] : {std::pair<const void*, const char*>{positions, "positions"}, {edges, "edges"}, {edge_polys, "edge_polys"}, {out, "out"}})
+            require(p, name);
+        const el_polygons& P = *polys;
+        if (P.polygon_count) {
+            require(P.start, "polys->start");
+            require(P.total, "polys->total");
+        }
+        if (P.loop_count) require(P.loop_vert, "polys->loop_vert");
+        for (uint32_t k = 0; k < P.polygon_count; ++k)
+            if (P.total[k] < 1 || uint64_t(P.start[k]) + P.total[k] > P.loop_count)
+                el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "polygon " + std::to_string(k) + "'s loops are not within the " +
+                                                        std::to_string(P.loop_count) + " loops (at least one each)");
+        require_below(P.loop_vert, P.loop_count, vertex_count, "polys->loop_vert", "vertex count");
+        require_below(edges, 2 * size_t(count), vertex_count, "edges", "vertex count");
+        require_finite_array(positions, 3 * size_t(vertex_count), "positions");
+        for (size_t i = 0; i < 2 * size_t(count); ++i)
+            if (edge_polys[i] < -1 || (edge_polys[i] >= 0 && uint32_t(edge_polys[i]) >= P.polygon_count))
+                el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "edge_polys[" + std::to_string(i) + "] = " +
+                                                        std::to_string(edge_polys[i]) + " is no polygon (nor -1)");
+        el::width_bounds(P, positions, edges, edge_polys, count, out);
     });
 }
 

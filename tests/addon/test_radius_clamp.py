@@ -116,6 +116,7 @@ class WidthBounds(unittest.TestCase):
         and 2 of a quad); on rectangles it is the width."""
         for m, exact in ((triangulated_plate()[0], False), (folded_strip(6, 10.0), True)):
             positions, edges, polys, tris = m
+            positions = positions.astype(np.float32)  # as Blender's (the library reads float32)
             ep = edge_polygons(edges, polys)
             inner = np.flatnonzero(ep[:, 1] >= 0)
             tri_of_poly = {int(p): t for t, p in enumerate(polys.tri_poly)}
@@ -125,6 +126,26 @@ class WidthBounds(unittest.TestCase):
             self.assertTrue(np.all(bound <= full + 1e-12))
             if exact:
                 np.testing.assert_allclose(bound, full, atol=1e-12)
+
+    def test_the_library_bounds_as_the_reference_does(self):
+        """el_width_bounds against the numpy it replaced (radius_clamp_reference.py): grid boxes
+        jittered and whole, the plate, the strip, every edge, one side missing on some: the same
+        bounds (within 1e-12 of their size)."""
+        import radius_clamp_reference as reference
+        from test_rounded_outline import grid_box
+        rng = np.random.default_rng(41)
+        meshes = [triangulated_plate()[0], folded_strip(6, 10.0), grid_box(2), grid_box(4)]
+        positions, edges, polys, tris = grid_box(3)
+        loops = [polys.loop_vert[a:a + k].tolist() for a, k in zip(polys.start, polys.total)]
+        meshes.append(mesh(positions + rng.normal(scale=0.02, size=positions.shape), loops))
+        for positions, edges, polys, tris in meshes:
+            positions = positions.astype(np.float32)  # as Blender's (the library reads float32)
+            ep = edge_polygons(edges, polys)
+            ep[rng.random(len(ep)) < 0.1, 1] = -1
+            got = radius_clamp.width_bounds(polys, positions, edges, ep)
+            want = reference.width_bounds(polys, positions, edges, ep)
+            np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-12)
+            self.assertTrue(np.all(got[ep[:, 1] < 0, 1] == 0.0))
 
 
 if __name__ == "__main__":

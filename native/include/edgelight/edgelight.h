@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 10u
+#define EL_ABI_VERSION 11u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -448,6 +448,14 @@ EL_API el_status el_band_ends(const el_polygons* polys, const float* positions, 
                               const uint32_t* edges, const float* edge_normals, const uint8_t* rounded,
                               const uint8_t* smooth, const int32_t* edge_polys, uint32_t edge_count,
                               const uint32_t* selected, const int32_t* faces, uint32_t count, float* out);
+
+/* A lower bound of how wide each of `count` edges' faces are across it (the radius clamp's first
+ * look, before any walk): per edge and side, the farthest from the edge's line of three corners
+ * of that side's polygon (its first loop's, and a third and two thirds of the way round), 0
+ * where the side has none. edges: 2 vertices per edge; edge_polys: 2 polygons per edge (-1:
+ * none); polys: start, total and loop_vert are read. out: 2 doubles per edge. */
+EL_API el_status el_width_bounds(const el_polygons* polys, const float* positions, uint32_t vertex_count,
+                                 const uint32_t* edges, const int32_t* edge_polys, uint32_t count, double* out);
 
 /* The two normals each selected rounded edge's arc runs between at each of its ends, as the
  * mesh gives them (edge_normals: N1, N2, 6 floats an edge, the faces' own), each turned to the
