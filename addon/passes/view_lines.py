@@ -67,7 +67,7 @@ def view_line_segments(scene, camera, line_settings, counters=None, rounded=Fals
 def _silhouettes(scene, extract, matrices, camera, taper, rounded):
     """lines.silhouettes of the instances of one mesh; where the move onto the rounded outline
     fails (the library refusing the mesh's records), on the sharp edges with a report, and where
-    the library refuses the views altogether, none (a status name each)."""
+    the library refuses the views altogether, none (its message for each)."""
     try:
         try:
             return ink.silhouettes(extract, np.asarray(matrices), camera, taper, rounded)
