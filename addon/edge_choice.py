@@ -49,25 +49,16 @@ def choose_edges(d, shading):
     rounding and either one's rule picks it; it takes the smaller radius and the shading of the
     material of its first face."""
     flags, angles, normals, edges, positions = d.flags, d.angles, d.normals, d.edges, d.positions
-    face_a, face_b, tri_slot, sharp, bevel = d.face_a, d.face_b, d.tri_slot, d.sharp, d.bevel
+    face_a, face_b, tri_slot, sharp = d.face_a, d.face_b, d.tri_slot, d.sharp
+    # The rule (the library's el_edge_rules): rounded where manifold with two faces, both faces'
+    # materials round edges, and either one's rules pick it; the smaller radius of those that do.
+    bits = {'ANGLE': native.RULE_ANGLE, 'SHARP': native.RULE_SHARP, 'BEVEL': native.RULE_BEVEL}
+    r = native.edge_rules(flags, angles, face_a, face_b, sharp, d.bevel, tri_slot,
+                          [(s.enabled, s.radius, s.K, sum(bits[b] for b in s.rules), s.angle_deg) for s in shading])
+    chosen, radius = r["chosen"], r["radius"]
+    slot_a, slot_b, pick_a, pick_b, rad_a, rad_b = (r[k].astype(np.int64) if k.startswith("slot") else r[k]
+                                                    for k in ("slot_a", "slot_b", "pick_a", "pick_b", "rad_a", "rad_b"))
     ok = ((flags & native.EDGE_MANIFOLD) != 0) & ((flags & native.EDGE_DEGENERATE) == 0) & (face_b >= 0)
-    slot_a = np.where(face_a >= 0, tri_slot[np.maximum(face_a, 0)], 0)
-    slot_b = np.where(face_b >= 0, tri_slot[np.maximum(face_b, 0)], 0)
-
-    def picked(slot):
-        enabled = np.array([s.enabled and s.radius > 0.0 and s.K > 0.0 for s in shading])[slot]
-        by_angle = np.array(['ANGLE' in s.rules for s in shading])[slot] & (angles > np.array([s.angle_deg for s in shading])[slot])
-        by_sharp = np.array(['SHARP' in s.rules for s in shading])[slot] & sharp
-        by_bevel = np.array(['BEVEL' in s.rules for s in shading])[slot] & (bevel > 0.0)
-        radius = np.array([s.radius for s in shading], np.float32)[slot]
-        # Picked by bevel weight alone: the weight scales the radius (like the Bevel modifier).
-        radius = np.where(by_bevel & ~(by_angle | by_sharp), radius * bevel, radius)
-        return enabled, by_angle | by_sharp | by_bevel, radius
-
-    en_a, pick_a, rad_a = picked(slot_a)
-    en_b, pick_b, rad_b = picked(slot_b)
-    chosen = ok & en_a & en_b & (pick_a | pick_b)
-    radius = np.minimum(np.where(pick_a, rad_a, np.inf), np.where(pick_b, rad_b, np.inf)).astype(np.float32)
     # No larger than the faces allow (Clamp Overlap): past that a band is no fillet's image.
     picked_edges = np.flatnonzero(chosen)
     # A face is its smooth patch, up to the next rounded, sharp or open edge: a fillet runs on

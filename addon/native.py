@@ -10,7 +10,7 @@ import numpy as np
 
 from . import library_check, platforms
 
-ABI_VERSION = 11
+ABI_VERSION = 12
 
 # Edge flags and marks (edgelight.h).
 EDGE_LOOSE = 1 << 0
@@ -52,6 +52,10 @@ OUTLINE_ARC_MAX_PIECES = 8
 NO_TAPER = 1.0e9  # the taper value of an end with no free end on its chain
 VIEW_LINES_TAPER = 1 << 0
 OUTLINE_FANS_OWN_SIDES = 1 << 0
+# Which edges a material slot rounds (el_slot_rules.rules).
+RULE_ANGLE = 1 << 0
+RULE_SHARP = 1 << 1
+RULE_BEVEL = 1 << 2
 
 TABLE_PAPER = 0
 TABLE_WARPED = 1
@@ -142,6 +146,11 @@ class OutlineView(ctypes.Structure):
                 ("view_to_clip", ctypes.c_float * 16), ("width", ctypes.c_float), ("height", ctypes.c_float)]
 
 
+class SlotRules(ctypes.Structure):
+    _fields_ = [("enabled", ctypes.c_uint32), ("radius", ctypes.c_float), ("K", ctypes.c_float),
+                ("rules", ctypes.c_uint32), ("angle_deg", ctypes.c_float)]
+
+
 class Polygons(ctypes.Structure):
     _fields_ = [("start", _u32p), ("total", _u32p), ("polygon_count", ctypes.c_uint32), ("loop_vert", _u32p),
                 ("loop_edge", _u32p), ("loop_count", ctypes.c_uint32), ("tri_poly", _u32p),
@@ -211,6 +220,9 @@ _SIGNATURES = {
     "el_band_ends": [ctypes.POINTER(Polygons), _f32p, ctypes.c_uint32, _u32p, _f32p, _u8p, _u8p,
                      ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32, _u32p, ctypes.POINTER(ctypes.c_int32),
                      ctypes.c_uint32, _f32p],
+    "el_edge_rules": [_u32p, _f32p, ctypes.POINTER(ctypes.c_int32), ctypes.POINTER(ctypes.c_int32), _u8p, _f32p,
+                      ctypes.c_uint32, _u32p, ctypes.c_uint32, ctypes.POINTER(SlotRules), ctypes.c_uint32, _u8p, _f32p,
+                      _u32p, _u32p, _u8p, _u8p, _f32p, _f32p],
     "el_width_bounds": [ctypes.POINTER(Polygons), _f32p, ctypes.c_uint32, _u32p, ctypes.POINTER(ctypes.c_int32),
                         ctypes.c_uint32, ctypes.POINTER(ctypes.c_double)],
     "el_shading_normals": [_f32p, ctypes.c_uint32, _u32p, _f32p, ctypes.POINTER(ctypes.c_int32), ctypes.c_uint32,
@@ -659,6 +671,35 @@ def _polygons(polys):
                   n.get("loop_vert", 0), _ptr(keep.get("tri_poly"), ctypes.c_uint32), n.get("tri_poly", 0),
                   _ptr(keep.get("normal"), ctypes.c_float))
     return pd, keep
+
+
+def edge_rules(flags, angles, face_a, face_b, sharp, bevel, tri_slot, slots, lib=None):
+    """el_edge_rules: which edges the material slots round. slots: per slot (enabled, radius, K,
+    RULE_* bits, angle_deg). A dict of per-edge arrays: chosen (bool), radius (inf where no
+    slot picks it), slot_a, slot_b, pick_a, pick_b (bool), rad_a, rad_b."""
+    lib = lib or load()
+    n = len(flags)
+    f = _contiguous(flags, np.uint32)
+    ang = _contiguous(angles, np.float32)
+    fa, fb = (np.ascontiguousarray(a, np.int32) for a in (face_a, face_b))
+    sh = np.ascontiguousarray(sharp, np.uint8)
+    bv = _contiguous(bevel, np.float32)
+    ts = _contiguous(tri_slot, np.uint32)
+    if any(len(a) != n for a in (ang, fa, fb, sh, bv)):
+        raise ValueError(f"edge_rules: arrays of {[len(a) for a in (f, ang, fa, fb, sh, bv)]} for {n} edges")
+    rules = (SlotRules * max(len(slots), 1))(*(SlotRules(int(bool(e)), float(r), float(k), int(b), float(a))
+                                               for e, r, k, b, a in slots))
+    out = {"chosen": np.empty(n, np.uint8), "radius": np.empty(n, np.float32), "slot_a": np.empty(n, np.uint32),
+           "slot_b": np.empty(n, np.uint32), "pick_a": np.empty(n, np.uint8), "pick_b": np.empty(n, np.uint8),
+           "rad_a": np.empty(n, np.float32), "rad_b": np.empty(n, np.float32)}
+    i32 = ctypes.POINTER(ctypes.c_int32)
+    ptr = {np.dtype(np.uint8): ctypes.c_uint8, np.dtype(np.uint32): ctypes.c_uint32, np.dtype(np.float32): ctypes.c_float}
+    lib.call("el_edge_rules", _ptr(f, ctypes.c_uint32), _ptr(ang, ctypes.c_float), fa.ctypes.data_as(i32),
+             fb.ctypes.data_as(i32), _ptr(sh, ctypes.c_uint8), _ptr(bv, ctypes.c_float), n, _ptr(ts, ctypes.c_uint32),
+             len(ts), rules, len(slots), *(_ptr(a, ptr[a.dtype]) for a in out.values()))
+    for k in ("chosen", "pick_a", "pick_b"):
+        out[k] = out[k].astype(bool)
+    return out
 
 
 def width_bounds(polys, positions, edges, edge_polys, lib=None):

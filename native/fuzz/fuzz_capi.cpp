@@ -453,6 +453,22 @@ void fuzz_outline(FuzzedDataProvider& p) {
     el_band_ends(p.ConsumeIntegralInRange<int>(0, 15) ? &polys : nullptr, pos.data(), 8, ev.data(), edges.data(),
                  chosen.data(), fans ? stops.data() : nullptr, fans ? epolys.data() : nullptr, ec, sel.data(),
                  ef.data(), p.ConsumeIntegralInRange<uint32_t>(0, ec), angles.data());
+    // The rounding rule over the same edges: any flags, angles, faces, slots and rules.
+    std::vector<uint32_t> eflags(ec + 1), tslot(tris + 1);
+    for (auto& x : eflags) x = p.ConsumeIntegral<uint32_t>() & 0x3ffu;
+    for (auto& x : tslot) x = p.ConsumeIntegralInRange<uint32_t>(0, 3);
+    std::vector<float> eangles(ec + 1), ebevel(ec + 1);
+    for (auto* a : {&eangles, &ebevel})
+        for (auto& x : *a) x = value();
+    el_slot_rules srules[3];
+    for (auto& r : srules) r = el_slot_rules{p.ConsumeIntegralInRange<uint32_t>(0, 1), value(), value(),
+                                             p.ConsumeIntegralInRange<uint32_t>(0, 7), value()};
+    std::vector<uint8_t> rchosen(ec + 1), rpa(ec + 1), rpb(ec + 1);
+    std::vector<float> rradius(ec + 1), rra(ec + 1), rrb(ec + 1);
+    std::vector<uint32_t> rsa(ec + 1), rsb(ec + 1);
+    el_edge_rules(eflags.data(), eangles.data(), ef.data(), ef.data() + ec, stops.data(), ebevel.data(), ec,
+                  tslot.data(), tris, srules, p.ConsumeIntegralInRange<uint32_t>(0, 3), rchosen.data(), rradius.data(),
+                  p.ConsumeBool() ? rsa.data() : nullptr, rsb.data(), rpa.data(), rpb.data(), rra.data(), rrb.data());
     std::vector<double> widths(2 * size_t(ec) + 1);
     el_width_bounds(p.ConsumeIntegralInRange<int>(0, 15) ? &polys : nullptr, pos.data(), 8, ev.data(), epolys.data(),
                     p.ConsumeIntegralInRange<uint32_t>(0, ec), widths.data());

@@ -4,6 +4,7 @@
 #include "band_ends.hpp"
 #include "capi_common.hpp"
 #include "corner_patches.hpp"
+#include "edge_rules.hpp"
 #include "radius_clamp.hpp"
 #include "shading_normals.hpp"
 
@@ -163,6 +164,34 @@ EL_API el_status el_width_bounds(const el_polygons* polys, const float* position
                 el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "edge_polys[" + std::to_string(i) + "] = " +
                                                         std::to_string(edge_polys[i]) + " is no polygon (nor -1)");
         el::width_bounds(P, positions, edges, edge_polys, count, out);
+    });
+}
+
+EL_API el_status el_edge_rules(const uint32_t* flags, const float* angles, const int32_t* face_a, const int32_t* face_b,
+                               const uint8_t* sharp, const float* bevel, uint32_t edge_count, const uint32_t* tri_slot,
+                               uint32_t triangle_count, const el_slot_rules* slots, uint32_t slot_count,
+                               uint8_t* out_chosen, float* out_radius, uint32_t* out_slot_a, uint32_t* out_slot_b,
+                               uint8_t* out_pick_a, uint8_t* out_pick_b, float* out_rad_a, float* out_rad_b) {
+    return guarded("el_edge_rules", [&] {
+        if (edge_count == 0) return;
+        for (auto [p, name] : {std::pair<const void*, const char*>{flags, "flags"}, {angles, "angles"}, {face_a, "face_a"}, {face_b, "face_b"}, {sharp, "sharp"}, {bevel, "bevel"}, {slots, "slots"}, {out_chosen, "out_chosen"}, {out_radius, "out_radius"}})
+            require(p, name);
+        if (slot_count == 0) el::fail(EL_ERR_INVALID_COUNT, "slot_count is 0 (a mesh has at least one slot)");
+        if (triangle_count) require(tri_slot, "tri_slot");
+        require_below(tri_slot, triangle_count, slot_count, "tri_slot", "slot count");
+        for (auto [faces, name] : {std::pair{face_a, "face_a"}, {face_b, "face_b"}})
+            for (uint32_t e = 0; e < edge_count; ++e)
+                if (faces[e] < -1 || (faces[e] >= 0 && uint32_t(faces[e]) >= triangle_count))
+                    el::fail(EL_ERR_INDEX_OUT_OF_RANGE, std::string(name) + "[" + std::to_string(e) + "] = " +
+                                                            std::to_string(faces[e]) + " is no triangle (nor -1)");
+        require_finite_array(angles, edge_count, "angles");
+        require_finite_array(bevel, edge_count, "bevel");
+        for (uint32_t s = 0; s < slot_count; ++s)
+            if (!std::isfinite(slots[s].radius) || !std::isfinite(slots[s].K) || !std::isfinite(slots[s].angle_deg))
+                el::fail(EL_ERR_NON_FINITE, "slots[" + std::to_string(s) + "] has a value that is not finite");
+        el::edge_rules(el::EdgeRuleInputs{flags, angles, face_a, face_b, sharp, bevel, edge_count, tri_slot, slots},
+                       el::EdgeRuleOutputs{out_chosen, out_radius, out_slot_a, out_slot_b, out_pick_a, out_pick_b,
+                                           out_rad_a, out_rad_b});
     });
 }
 

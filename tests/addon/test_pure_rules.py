@@ -218,6 +218,40 @@ class ShadingNormalsAgainstTheReference(unittest.TestCase):
         self.assertGreater(kept, 50)
 
 
+class EdgeRulesAgainstTheReference(unittest.TestCase):
+    def test_the_library_applies_the_references_rule(self):
+        """el_edge_rules against the numpy it replaced (edge_choice_reference.py): 3000 edges of
+        random flags, angles (half exactly at a slot's angle), faces (some missing), sharp marks
+        and bevel weights over four slots of different rules, radii and angles (one disabled,
+        one at strength 0): every output the same (radii exactly)."""
+        import edge_choice_reference as reference
+        rng = np.random.default_rng(51)
+        n, tris = 3000, 500
+        flags = rng.choice([MANIFOLD, MANIFOLD | native.EDGE_DEGENERATE, native.EDGE_BORDER, MANIFOLD | native.EDGE_CONVEX],
+                           n).astype(np.uint32)
+        # Half the angles exactly at a slot's angle (not past it), half anywhere.
+        angles = np.where(rng.random(n) < 0.5, rng.choice([10.0, 30.0, 45.0, 60.0], n),
+                          rng.uniform(0.0, 180.0, n)).astype(np.float32)
+        face_a = rng.integers(-1, tris, n)
+        face_b = np.where(rng.random(n) < 0.1, -1, rng.integers(0, tris, n))
+        tri_slot = rng.integers(0, 4, tris)
+        # Slot 2 at strength 0 and slot 3 disabled round nothing, even where their rules pick.
+        shading = [Shading(enabled=True, radius=0.05, K=1.0, rules=frozenset({'ANGLE'}), angle_deg=30.0),
+                   Shading(enabled=True, radius=0.12, K=1.0, rules=frozenset({'SHARP', 'BEVEL'}), angle_deg=45.0),
+                   Shading(enabled=True, radius=0.08, K=0.0, rules=frozenset({'ANGLE', 'SHARP', 'BEVEL'}), angle_deg=10.0),
+                   Shading(enabled=False, radius=0.2, K=1.0, rules=frozenset({'ANGLE'}), angle_deg=60.0)]
+        d = types.SimpleNamespace(flags=flags, angles=angles, face_a=face_a, face_b=face_b, tri_slot=tri_slot,
+                                  sharp=rng.random(n) < 0.2, bevel=np.where(rng.random(n) < 0.3, rng.random(n), 0.0).astype(np.float32))
+        bits = {'ANGLE': native.RULE_ANGLE, 'SHARP': native.RULE_SHARP, 'BEVEL': native.RULE_BEVEL}
+        got = native.edge_rules(d.flags, d.angles, d.face_a, d.face_b, d.sharp, d.bevel, d.tri_slot,
+                                [(s.enabled, s.radius, s.K, sum(bits[b] for b in s.rules), s.angle_deg) for s in shading])
+        want = reference.rules(d, shading)
+        for name, w in zip(("chosen", "radius", "slot_a", "slot_b", "pick_a", "pick_b", "rad_a", "rad_b"), want):
+            np.testing.assert_array_equal(got[name], w, err_msg=name)
+        self.assertGreater(int(got["chosen"].sum()), 150)
+        self.assertGreater(int((~got["chosen"] & (got["pick_a"] | got["pick_b"])).sum()), 100)
+
+
 class ChooseEdges(unittest.TestCase):
     def test_angle_rule_rounds_edges_past_the_angle(self):
         got = edge_choice.choose_edges(edges_of([10.0, 30.0, 31.0, 90.0]), [Shading()])

@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 /* Bumped on every change of a signature, struct layout or enum value below. */
-#define EL_ABI_VERSION 11u
+#define EL_ABI_VERSION 12u
 
 typedef enum el_status {
     EL_OK = 0,
@@ -448,6 +448,33 @@ EL_API el_status el_band_ends(const el_polygons* polys, const float* positions, 
                               const uint32_t* edges, const float* edge_normals, const uint8_t* rounded,
                               const uint8_t* smooth, const int32_t* edge_polys, uint32_t edge_count,
                               const uint32_t* selected, const int32_t* faces, uint32_t count, float* out);
+
+/* Which edges each material slot rounds (a material's Rounded Edges settings). el_slot_rules.rules: */
+#define EL_RULE_ANGLE (1u << 0) /* edges folded past angle_deg */
+#define EL_RULE_SHARP (1u << 1) /* edges marked sharp */
+#define EL_RULE_BEVEL (1u << 2) /* edges with a bevel weight: alone, the weight scales the radius */
+
+typedef struct el_slot_rules {
+    uint32_t enabled;  /* the material rounds edges at all */
+    float radius;      /* object space */
+    float K;           /* the highlight's strength: 0 rounds nothing */
+    uint32_t rules;    /* EL_RULE_* */
+    float angle_deg;
+} el_slot_rules;
+
+/* The rule, per edge of a mesh: an edge is rounded where it is manifold, not degenerate, has a
+ * second face, both faces' slots round edges (enabled, radius and K above 0) and either slot's
+ * rules pick it; it takes the smaller radius of the slots that pick it. flags (EL_EDGE_*),
+ * angles (degrees), face_a / face_b (each edge's first two triangles, -1 none), sharp (a byte),
+ * bevel (the weight) per edge; tri_slot per triangle (below slot_count). Out per edge (any
+ * NULL but chosen and radius is not written): chosen (a byte), radius (the rounding radius,
+ * inf where no slot picks it), slot_a / slot_b (its faces' slots, 0 without a face), pick_a /
+ * pick_b (whether that slot's rules pick it), rad_a / rad_b (the radius that slot asks). */
+EL_API el_status el_edge_rules(const uint32_t* flags, const float* angles, const int32_t* face_a, const int32_t* face_b,
+                               const uint8_t* sharp, const float* bevel, uint32_t edge_count, const uint32_t* tri_slot,
+                               uint32_t triangle_count, const el_slot_rules* slots, uint32_t slot_count,
+                               uint8_t* out_chosen, float* out_radius, uint32_t* out_slot_a, uint32_t* out_slot_b,
+                               uint8_t* out_pick_a, uint8_t* out_pick_b, float* out_rad_a, float* out_rad_b);
 
 /* A lower bound of how wide each of `count` edges' faces are across it (the radius clamp's first
  * look, before any walk): per edge and side, the farthest from the edge's line of three corners
