@@ -140,7 +140,7 @@ def view_line_batches(per_instance, chunk=None):
     chain records, or too many segments for one texture or one library call, get textures of
     their own."""
     out = [{} for _ in per_instance]
-    kinds = [k for k in dict.fromkeys(k for segs in per_instance for k in segs)]
+    kinds = list(dict.fromkeys(k for segs in per_instance for k in segs))
     for kind in kinds:
         parts = [(i, segs[kind]) for i, segs in enumerate(per_instance) if kind in segs and len(segs[kind])]
         total = sum(len(s) for _, s in parts)

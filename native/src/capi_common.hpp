@@ -46,6 +46,27 @@ inline void require_finite(double v, const char* name) {
     if (!std::isfinite(v)) fail(EL_ERR_NON_FINITE, std::string(name) + " is not finite");
 }
 
+inline void require_finite_array(const float* a, size_t count, const char* name) {
+    for (size_t i = 0; i < count; ++i)
+        if (!std::isfinite(a[i])) fail(EL_ERR_NON_FINITE, std::string(name) + "[" + std::to_string(i) + "] is not finite");
+}
+
+// Every a[i] below limit (`what`: the count it indexes, for the message).
+inline void require_below(const uint32_t* a, size_t count, uint32_t limit, const char* name, const char* what) {
+    for (size_t i = 0; i < count; ++i)
+        if (a[i] >= limit)
+            fail(EL_ERR_INDEX_OUT_OF_RANGE, std::string(name) + "[" + std::to_string(i) + "] = " + std::to_string(a[i]) +
+                                                " is not below the " + what + " " + std::to_string(limit));
+}
+
+// Every a[i] below limit, or -1 for none.
+inline void require_index_or_none(const int32_t* a, size_t count, uint32_t limit, const char* name, const char* what) {
+    for (size_t i = 0; i < count; ++i)
+        if (a[i] < -1 || (a[i] >= 0 && uint32_t(a[i]) >= limit))
+            fail(EL_ERR_INDEX_OUT_OF_RANGE, std::string(name) + "[" + std::to_string(i) + "] = " + std::to_string(a[i]) +
+                                                " is no " + what + " (nor -1)");
+}
+
 inline void require_finite3(const float* v, const char* name) {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(v[i])) fail(EL_ERR_NON_FINITE, std::string(name) + " is not finite");

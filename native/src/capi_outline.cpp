@@ -12,13 +12,9 @@
 using el::guarded;
 using el::require;
 using el::require_capacity;
+using el::require_finite_array;
 
 namespace {
-
-void require_finite_array(const float* a, size_t count, const char* name) {
-    for (size_t i = 0; i < count; ++i)
-        if (!std::isfinite(a[i])) el::fail(EL_ERR_NON_FINITE, std::string(name) + "[" + std::to_string(i) + "] is not finite");
-}
 
 }  // namespace
 

@@ -15,16 +15,24 @@ using el::require;
 
 namespace {
 
-void require_finite_array(const float* a, size_t count, const char* name) {
-    for (size_t i = 0; i < count; ++i)
-        if (!std::isfinite(a[i])) el::fail(EL_ERR_NON_FINITE, std::string(name) + "[" + std::to_string(i) + "] is not finite");
-}
+using el::require_below;
+using el::require_finite_array;
+using el::require_index_or_none;
 
-void require_below(const uint32_t* a, size_t count, uint32_t limit, const char* name, const char* what) {
-    for (size_t i = 0; i < count; ++i)
-        if (a[i] >= limit)
-            el::fail(EL_ERR_INDEX_OUT_OF_RANGE, std::string(name) + "[" + std::to_string(i) + "] = " + std::to_string(a[i]) +
-                                                    " is not below the " + what + " " + std::to_string(limit));
+// A polygon table's loops: start and total where there are polygons, each polygon's loops
+// (at least one) within the loops, each loop's vertex below vertex_count.
+void require_polygon_loops(const el_polygons& P, uint32_t vertex_count) {
+    if (P.polygon_count) {
+        require(P.start, "polys->start");
+        require(P.total, "polys->total");
+    }
+    if (P.loop_count) require(P.loop_vert, "polys->loop_vert");
+    for (uint32_t k = 0; k < P.polygon_count; ++k)
+        if (P.total[k] < 1 || uint64_t(P.start[k]) + P.total[k] > P.loop_count)
+            el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "polygon " + std::to_string(k) + "'s loops " + std::to_string(P.start[k]) +
+                                                    " + " + std::to_string(P.total[k]) + " are not within the " +
+                                                    std::to_string(P.loop_count) + " loops (at least one each)");
+    require_below(P.loop_vert, P.loop_count, vertex_count, "polys->loop_vert", "vertex count");
 }
 
 }  // namespace
@@ -42,10 +50,7 @@ EL_API el_status el_shading_normals(const float* positions, uint32_t vertex_coun
             require(p, name);
         require_below(selected, count, edge_count, "selected", "edge count");
         require_below(edges, 2 * size_t(edge_count), vertex_count, "edges", "vertex count");
-        for (size_t i = 0; i < 2 * size_t(edge_count); ++i)
-            if (edge_faces[i] < -1 || (edge_faces[i] >= 0 && uint32_t(edge_faces[i]) >= triangle_count))
-                el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "edge_faces[" + std::to_string(i) + "] = " +
-                                                        std::to_string(edge_faces[i]) + " is no triangle (nor -1)");
+        require_index_or_none(edge_faces, 2 * size_t(edge_count), triangle_count, "edge_faces", "triangle");
         require_finite_array(positions, 3 * size_t(vertex_count), "positions");
         require_finite_array(edge_normals, 6 * size_t(edge_count), "edge_normals");
         require_finite_array(corner_normals, 9 * size_t(triangle_count), "corner_normals");
@@ -100,23 +105,10 @@ EL_API el_status el_band_ends(const el_polygons* polys, const float* positions, 
         for (auto [p, name] : {std::pair<const void*, const char*>{positions, "positions"}, {edges, "edges"}, {edge_normals, "edge_normals"}, {rounded, "rounded"}, {selected, "selected"}, {faces, "faces"}, {out, "out"}})
             require(p, name);
         const el_polygons& P = *polys;
-        // Each array where its count says it has elements.
-        if (P.polygon_count) {
-            require(P.start, "polys->start");
-            require(P.total, "polys->total");
-            require(P.normal, "polys->normal");
-        }
-        if (P.loop_count) {
-            require(P.loop_vert, "polys->loop_vert");
-            require(P.loop_edge, "polys->loop_edge");
-        }
+        require_polygon_loops(P, vertex_count);
+        if (P.polygon_count) require(P.normal, "polys->normal");
+        if (P.loop_count) require(P.loop_edge, "polys->loop_edge");
         if (P.triangle_count) require(P.tri_poly, "polys->tri_poly");
-        for (uint32_t k = 0; k < P.polygon_count; ++k)
-            if (P.total[k] < 1 || uint64_t(P.start[k]) + P.total[k] > P.loop_count)
-                el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "polygon " + std::to_string(k) + "'s loops " + std::to_string(P.start[k]) +
-                                                        " + " + std::to_string(P.total[k]) + " are not within the " +
-                                                        std::to_string(P.loop_count) + " loops (at least one each)");
-        require_below(P.loop_vert, P.loop_count, vertex_count, "polys->loop_vert", "vertex count");
         require_below(P.loop_edge, P.loop_count, edge_count, "polys->loop_edge", "edge count");
         require_below(P.tri_poly, P.triangle_count, P.polygon_count, "polys->tri_poly", "polygon count");
         require_finite_array(P.normal, 3 * size_t(P.polygon_count), "polys->normal");
@@ -124,15 +116,8 @@ EL_API el_status el_band_ends(const el_polygons* polys, const float* positions, 
         require_below(selected, count, edge_count, "selected", "edge count");
         require_finite_array(positions, 3 * size_t(vertex_count), "positions");
         require_finite_array(edge_normals, 6 * size_t(edge_count), "edge_normals");
-        for (size_t i = 0; i < 2 * size_t(count); ++i)
-            if (faces[i] < -1 || (faces[i] >= 0 && uint32_t(faces[i]) >= P.triangle_count))
-                el::fail(EL_ERR_INDEX_OUT_OF_RANGE,
-                         "faces[" + std::to_string(i) + "] = " + std::to_string(faces[i]) + " is no triangle (nor -1)");
-        if (edge_polys)
-            for (size_t i = 0; i < 2 * size_t(edge_count); ++i)
-                if (edge_polys[i] < -1 || (edge_polys[i] >= 0 && uint32_t(edge_polys[i]) >= P.polygon_count))
-                    el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "edge_polys[" + std::to_string(i) + "] = " +
-                                                            std::to_string(edge_polys[i]) + " is no polygon (nor -1)");
+        require_index_or_none(faces, 2 * size_t(count), P.triangle_count, "faces", "triangle");
+        if (edge_polys) require_index_or_none(edge_polys, 2 * size_t(edge_count), P.polygon_count, "edge_polys", "polygon");
         el::band_ends(el::BandEndInputs{polys, positions, vertex_count, edges, edge_normals, rounded, smooth, edge_polys,
                                         edge_count},
                       selected, faces, count, out);
@@ -147,22 +132,10 @@ EL_API el_status el_width_bounds(const el_polygons* polys, const float* position
         for (auto [p, name] : {std::pair<const void*, const char*>{positions, "positions"}, {edges, "edges"}, {edge_polys, "edge_polys"}, {out, "out"}})
             require(p, name);
         const el_polygons& P = *polys;
-        if (P.polygon_count) {
-            require(P.start, "polys->start");
-            require(P.total, "polys->total");
-        }
-        if (P.loop_count) require(P.loop_vert, "polys->loop_vert");
-        for (uint32_t k = 0; k < P.polygon_count; ++k)
-            if (P.total[k] < 1 || uint64_t(P.start[k]) + P.total[k] > P.loop_count)
-                el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "polygon " + std::to_string(k) + "'s loops are not within the " +
-                                                        std::to_string(P.loop_count) + " loops (at least one each)");
-        require_below(P.loop_vert, P.loop_count, vertex_count, "polys->loop_vert", "vertex count");
+        require_polygon_loops(P, vertex_count);
         require_below(edges, 2 * size_t(count), vertex_count, "edges", "vertex count");
         require_finite_array(positions, 3 * size_t(vertex_count), "positions");
-        for (size_t i = 0; i < 2 * size_t(count); ++i)
-            if (edge_polys[i] < -1 || (edge_polys[i] >= 0 && uint32_t(edge_polys[i]) >= P.polygon_count))
-                el::fail(EL_ERR_INDEX_OUT_OF_RANGE, "edge_polys[" + std::to_string(i) + "] = " +
-                                                        std::to_string(edge_polys[i]) + " is no polygon (nor -1)");
+        require_index_or_none(edge_polys, 2 * size_t(count), P.polygon_count, "edge_polys", "polygon");
         el::width_bounds(P, positions, edges, edge_polys, count, out);
     });
 }
@@ -179,11 +152,8 @@ EL_API el_status el_edge_rules(const uint32_t* flags, const float* angles, const
         if (slot_count == 0) el::fail(EL_ERR_INVALID_COUNT, "slot_count is 0 (a mesh has at least one slot)");
         if (triangle_count) require(tri_slot, "tri_slot");
         require_below(tri_slot, triangle_count, slot_count, "tri_slot", "slot count");
-        for (auto [faces, name] : {std::pair{face_a, "face_a"}, {face_b, "face_b"}})
-            for (uint32_t e = 0; e < edge_count; ++e)
-                if (faces[e] < -1 || (faces[e] >= 0 && uint32_t(faces[e]) >= triangle_count))
-                    el::fail(EL_ERR_INDEX_OUT_OF_RANGE, std::string(name) + "[" + std::to_string(e) + "] = " +
-                                                            std::to_string(faces[e]) + " is no triangle (nor -1)");
+        require_index_or_none(face_a, edge_count, triangle_count, "face_a", "triangle");
+        require_index_or_none(face_b, edge_count, triangle_count, "face_b", "triangle");
         require_finite_array(angles, edge_count, "angles");
         require_finite_array(bevel, edge_count, "bevel");
         for (uint32_t s = 0; s < slot_count; ++s)

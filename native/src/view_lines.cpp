@@ -1,5 +1,6 @@
 #include "view_lines.hpp"
 
+#include "capi_common.hpp"
 #include "chains.hpp"
 #include "error.hpp"
 #include "view_cache.hpp"
@@ -18,13 +19,8 @@ namespace {
 // Instances a thread takes at least; a call of up to this many runs on the caller's thread.
 constexpr uint32_t kInstancesPerTask = 64;
 
-void require_finite_array(const float* a, size_t count, const char* name) {
-    for (size_t i = 0; i < count; ++i)
-        if (!std::isfinite(a[i])) fail(EL_ERR_NON_FINITE, std::string(name) + "[" + std::to_string(i) + "] is not finite");
-}
-
 Mat4 matrix(const float* m, const char* name) {
-    require_finite_array(m, 16, name);
+    el::require_finite_array(m, 16, name);
     Mat4 r{};
     std::copy(m, m + 16, r.m);
     return r;
@@ -81,8 +77,8 @@ OutlineCamera outline_camera(const el_outline_view& v) {
     if (v.projection != EL_PERSPECTIVE && v.projection != EL_ORTHOGRAPHIC)
         fail(EL_ERR_INVALID_ARGUMENT, "view projection " + std::to_string(v.projection) + " is no el_projection");
     c.orthographic = v.projection == EL_ORTHOGRAPHIC;
-    require_finite_array(v.eye, 3, "view eye");
-    require_finite_array(v.view_dir, 3, "view view_dir");
+    el::require_finite_array(v.eye, 3, "view eye");
+    el::require_finite_array(v.view_dir, 3, "view view_dir");
     c.eye = glm::dvec3(v.eye[0], v.eye[1], v.eye[2]);
     c.view_dir = glm::dvec3(v.view_dir[0], v.view_dir[1], v.view_dir[2]);
     if (c.orthographic && !(glm::length(c.view_dir) > 0.0))
