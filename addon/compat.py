@@ -153,12 +153,13 @@ def compat_panels():
 
 
 
-def texture(size, fmt, data=None):
-    """GPUTexture with keyword arguments (keyword-only in 5.0)."""
+def texture(size, fmt, data=None, layers=0):
+    """GPUTexture with keyword arguments (keyword-only in 5.0); `layers` > 0: a 2D array."""
     import gpu
+    extra = {"layers": layers} if layers else {}
     if data is None:
-        return gpu.types.GPUTexture(size, format=fmt)
-    return gpu.types.GPUTexture(size, format=fmt, data=data)
+        return gpu.types.GPUTexture(size, format=fmt, **extra)
+    return gpu.types.GPUTexture(size, format=fmt, data=data, **extra)
 
 
 def write_pass_channels(render_pass, pixels):

@@ -13,7 +13,7 @@ import gpu
 import numpy as np
 
 from . import compat, lines, native, render_cache, render_passes, scene_sync, svg_output, viewport
-from .passes import camera, frame, toon
+from .passes import camera, frame, shadow_plan, toon
 
 # Tests set `capture = True` to receive the last render's record (pixels, pass buffers, camera,
 # scene, reports) in `last_render`, per view layer in `last_render["layers"]`. Otherwise a
@@ -141,9 +141,9 @@ def camera_for_render(depsgraph, full_w, full_h, region, view=None):
                                            scale_y=r.pixel_aspect_y), dtype=np.float64)
     if view is not None:
         proj = stereo_shift(proj, view[1] - cam.data.shift_x, full_w, full_h, r, cam)
-    _, _, w, h = region
+    x, y, w, h = region
     return camera.from_view(np.linalg.inv(world), region_projection(proj, full_w, full_h, region),
-                            cam.data.type == 'ORTHO', w, h)
+                            cam.data.type == 'ORTHO', w, h, frame_projection=proj, pixel_origin=(x, y))
 
 
 def render_views(r):
@@ -329,7 +329,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         s = frame.Settings(samples=settings.samples, highlights=settings.highlights,
                            transparent=depsgraph.scene.render.film_transparent, lines=line_settings,
                            ids="ids" in buffers,
-                           lines_in_combined=render_passes.lines_in_combined(depsgraph.view_layer))
+                           lines_in_combined=render_passes.lines_in_combined(depsgraph.view_layer),
+                           shadows=shadow_plan.settings_of(settings))
         reported = len(data.reports)
 
         def progress(done, total):

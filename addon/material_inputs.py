@@ -1,13 +1,19 @@
 """What of a material's node tree EdgeLight reads, and what it cannot: the Principled BSDF's
-socket values (materials.py), never what is linked into them, and none of its lobes past the
-base, metallic and specular ones. What a material sets that EdgeLight does not draw is said once
+socket values (materials.py) and an Image Texture straight into its Base Color (image_input),
+never anything else linked into them, and none of its lobes past the base, metallic and
+specular ones. What a material sets that EdgeLight does not draw is said once
 per material (a report line) and in its panel, instead of rendering as if it were not there.
 """
+from dataclasses import dataclass
+
 from . import compat
+from .passes import shader_specs
 
 # Principled BSDF inputs EdgeLight reads as values (materials.shading_of); a link into one is
 # not followed: its socket's own value is drawn. Names of 3.4 and of 4.0+ (renamed sockets).
 READ = ("Base Color", "Metallic", "Roughness", "Specular", "Specular IOR Level", "Alpha")
+# Inputs an Image Texture may feed (image_input): drawn, so not said.
+TEXTURED = ("Base Color",)
 # Inputs that change the look when linked, though EdgeLight uses the mesh's normals and no emission.
 LINKED_IGNORED = ("Normal", "Emission", "Emission Color", "Emission Strength")
 # Lobes EdgeLight does not draw: (label, weight sockets by version). On when a weight is above 0.
@@ -26,6 +32,67 @@ def _from_node(socket):
             return node
         socket = node.inputs[0]
     return None
+
+
+@dataclass(frozen=True)
+class ImageInput:
+    """An Image Texture EdgeLight draws into a Principled input (shaders/textures.glsl): its image,
+    the UV map it reads ("" for the mesh's active render map), Closest or not, and how it
+    extends past [0, 1]."""
+    image: object
+    uv_map: str = ""
+    closest: bool = False
+    extension: str = 'REPEAT'   # REPEAT, EXTEND or CLIP
+
+
+# What an Image Texture's settings can be for EdgeLight to draw it as EEVEE does (its Vector
+# input: _uv_source); the extensions are shaders/surface_modes.json's EL_EXTEND.
+_DRAWN_INTERPOLATION = {'Closest', 'Linear', 'Cubic', 'Smart'}
+EXTENSIONS = shader_specs.enum("surface_modes.json", "EL_EXTEND")
+
+
+def image_input(socket):
+    """The ImageInput feeding `socket` straight from an Image Texture's Color output (through
+    reroutes), or None when the socket is unlinked or fed otherwise (then unread_inputs says
+    what it is). Cubic and Smart interpolation draw as Linear."""
+    link_socket = socket
+    while link_socket is not None and link_socket.is_linked:
+        link = link_socket.links[0]
+        node = link.from_node
+        if node.type == 'REROUTE':
+            link_socket = node.inputs[0]
+            continue
+        if node.type != 'TEX_IMAGE' or link.from_socket.name != "Color" or node.image is None:
+            return None
+        if node.projection != 'FLAT' or node.interpolation not in _DRAWN_INTERPOLATION:
+            return None
+        uv = _uv_source(node.inputs["Vector"])
+        if uv is None or node.image.source not in {'FILE', 'GENERATED'} or image_unreadable(node.image):
+            return None
+        if node.extension not in EXTENSIONS:
+            return None
+        return ImageInput(node.image, uv, node.interpolation == 'Closest', node.extension)
+    return None
+
+
+def _uv_source(vector):
+    """The UV map an Image Texture's Vector reads: "" for the active render map; None when it is
+    fed by anything but a UV Map node or a Texture Coordinate's UV output."""
+    if not vector.is_linked:
+        return ""
+    link = vector.links[0]
+    node = link.from_node
+    if node.type == 'UVMAP' and not node.from_instancer:
+        return node.uv_map
+    if node.type == 'TEX_COORD' and link.from_socket.name == "UV" and not node.from_instancer:
+        return ""
+    return None
+
+
+def image_unreadable(image):
+    """Whether an image has no pixels to draw (a missing file reads as 0 x 0)."""
+    w, h = image.size
+    return w < 1 or h < 1
 
 
 def _describe(node):
@@ -104,6 +171,8 @@ def unread_inputs(node):
         source = _from_node(socket) if socket is not None else None
         if source is None:
             continue
+        if name in TEXTURED and image_input(socket) is not None:
+            continue  # drawn (surface.frag.glsl's EL_BASE_TEXTURE)
         if name in READ:
             out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)} (its value {_value(socket)} is drawn)"))
         else:

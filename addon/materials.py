@@ -5,7 +5,7 @@ from dataclasses import dataclass, replace
 
 import bpy
 
-from . import color_ramp, material_inputs
+from . import color_ramp, material_inputs, textures
 from . import material_defaults as defaults
 from .passes import shader_specs
 from .properties import K_MAX
@@ -50,6 +50,19 @@ class Shading:
     note: str = ""
     material: str = ""     # the material's name_full ("" without one): keys the radius clamp notes
     pass_index: int = 0    # the material's Pass Index (the Material Index render pass)
+    texture: object = None  # BaseTexture: an image drawn into Base Color by the surface pass
+
+
+@dataclass(frozen=True)
+class BaseTexture:
+    """An Image Texture in a material's Base Color (material_inputs.image_input), as the surface
+    pass draws it (surface.frag.glsl, EL_BASE_TEXTURE): albedo = texel x (1 - metallic), F0 =
+    `f0` + texel x metallic. The Shading's own base and specular colours take the image's mean
+    colour, for what draws the material without the texture (the edge bands, corner patches and
+    the toon ramp's default stops)."""
+    source: object         # material_inputs.ImageInput
+    metallic: float
+    f0: tuple              # the dielectric part of F0: 0.08 specular (1 - metallic)
 
 
 def default_ramp(base):
@@ -112,8 +125,12 @@ def shading_of(material):
                        defaults.ROUNDED, defaults.HIGHLIGHT_STRENGTH, defaults.RADIUS, defaults.TINT, defaults.EDGES,
                        defaults.ANGLE_DEG, Toon(SURFACE_MODES[defaults.SHADING]))
     node = _principled(material)
+    image = None
     if node is not None:
         base = base_color_of(material)
+        image = material_inputs.image_input(node.inputs["Base Color"]) if node.inputs.get("Base Color") else None
+        if image is not None:
+            base = textures.mean_color(image.image)
         roughness = _float(node, 0.5, "Roughness")
         metallic = _float(node, 0.0, "Metallic")
         specular = _float(node, 0.5, "Specular", "Specular IOR Level")  # renamed in 4.0
@@ -133,9 +150,10 @@ def shading_of(material):
     note = "; ".join(n for n in (material_inputs.note(material, unread(material)), note) if n)
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.
+    texture = BaseTexture(image, metallic, (f0 * (1.0 - metallic),) * 3) if image is not None else None
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full,
-                   int(material.pass_index))
+                   int(material.pass_index), texture)
 
 
 def usable_toon(material_name, toon):

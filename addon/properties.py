@@ -13,7 +13,8 @@ from . import material_defaults as defaults
 #   3: material `ramp` (a list of stops) and `ramp_interpolation` -> `shade_ramp` (a colour ramp)
 #   4: material `K` (Highlight Strength) at most 1; a stored K > 1 becomes K = 1 and the radius times K
 #   5: material `radius` defaults to 5 cm instead of 1 cm; files of older layouts keep 1 cm
-SETTINGS_VERSION = 5
+#   6: scene `use_shadows` (cast shadows, on by default); scenes of older layouts keep none
+SETTINGS_VERSION = 6
 
 # The largest Highlight Strength: 1 draws the coverage a real rounded edge of the radius has.
 # Above 1, W = clamp(K x covered length, 0, 1) saturates the band's partly covered pixels: on a
@@ -154,6 +155,17 @@ class EdgeLightSceneSettings(bpy.types.PropertyGroup):
         description="Jittered samples accumulated in the viewport")
     highlights: bpy.props.BoolProperty(
         update=_tag, name="Edge Highlights", default=True, description="Draw the rounded-edge highlight pass")
+    use_shadows: bpy.props.BoolProperty(
+        update=_tag, name="Shadows", default=True,
+        description="Lights with Shadow on cast shadows (shadow maps drawn once per frame)")
+    shadow_size: bpy.props.EnumProperty(
+        update=_tag, name="Shadow Resolution", default='1024',
+        items=[('512', "512 px", ""), ('1024', "1024 px", ""), ('2048', "2048 px", ""), ('4096', "4096 px", "")],
+        description="Width and height of each shadow map: a sun's cascade, a spot's map, each face of a point or "
+                    "area light's cube")
+    soft_shadows: bpy.props.BoolProperty(
+        update=_tag, name="Soft Shadows", default=True,
+        description="Soften shadows by each light's Radius (a sun's Angle), as a light of that size casts them")
     show_debug_stats: bpy.props.BoolProperty(
         update=_tag, name="Developer Counters", default=False,
         description="Show the viewport's counters in the status bar: objects, edges drawn and culled, "

@@ -39,6 +39,7 @@ class MeshExtract:
     flips: np.ndarray = None                    # per triangle: the library reversed its winding (closed_surfaces)
     closed: bool = False                        # closed and consistently oriented: back faces hide (closed_surfaces)
     box: np.ndarray = None                      # (2, 3) object-space bounds of its surface
+    corner_uv: dict = field(default_factory=dict)  # UV map name ("": active render) -> (3T, 2), for textured slots
     # What is computed from the chosen edges (rounded_outline.from_edges: the fillets' outline
     # records), by name: (the edges it was computed from, the value). One dict shared by the
     # copies a render cache makes, so a reused extraction whose edges were not chosen again does
@@ -84,6 +85,8 @@ class Light:
     direction: tuple                   # where the light points
     spot_cos: float = -1.0
     spot_blend: float = 0.0
+    shadow: bool = False               # casts shadows (the light's Shadow setting)
+    radius: float = 0.0                # its size for soft shadows (a sun: tan of its angular radius)
 
 
 @dataclass
@@ -92,6 +95,7 @@ class Instance:
     matrix: np.ndarray                 # object -> world, 4x4 row-major
     pass_index: int = 0                # its object's Pass Index (the Object Index render pass)
     holdout: bool = False              # masked out of the view layer: a hole in the image
+    casts_shadow: bool = True          # its object's Ray Visibility > Shadow
 
 
 @dataclass
@@ -243,11 +247,12 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
         flat = np.repeat(polygon_unit_normals(mesh, positions)[tri_poly], 3, axis=0)
         corner_nor = np.where(np.isfinite(corner_nor).all(axis=1, keepdims=True), corner_nor, flat)
     shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
+    shading, corner_uv = textured_corners(name, mesh, shading, tri_loops)
     key = content = None
     if cache is not None or same_content is not None:
         digest = render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot, marks, bevel,
                                            tri_poly, polygons.start, polygons.total, polygons.loop_vert,
-                                           polygons.loop_edge, corner_nor))
+                                           polygons.loop_edge, corner_nor, *(corner_uv[k] for k in sorted(corner_uv))))
         # Shading follows from the materials alone within a render: their names decide.
         content = (id(lib), digest, tuple(s.material for s in shading))
         if same_content is not None and content in same_content:
@@ -275,7 +280,7 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     order = np.argsort(tri_slot, kind="stable")
     slot_triangles = {int(s): order[tri_slot[order] == s] for s in np.unique(tri_slot)}
     out = MeshExtract(name, positions[tri_verts.reshape(-1)], np.ascontiguousarray(corner_nor, np.float32),
-                      slot_triangles, shading, info=info)
+                      slot_triangles, shading, info=info, corner_uv=corner_uv)
     # The classification, kept so a material change can re-choose edges without a native call.
     # The id the surface pass writes for each triangle (passes/frame.py): its batch's first id
     # plus its place in the batch, since the slots' batches are drawn in this order.
@@ -329,6 +334,33 @@ def _reused(cache, key, kept, shading, line_settings):
     return out
 
 
+def render_uv_layer(mesh):
+    """The UV map an Image Texture reads when nothing says which: the active render one."""
+    layers = mesh.uv_layers
+    return next((uv for uv in layers if uv.active_render), layers.active)
+
+
+def textured_corners(name, mesh, shading, tri_loops):
+    """(shading, {UV map name: (3T, 2) corner UVs}) for the slots that draw an image
+    (materials.BaseTexture). A slot whose UV map the mesh lacks draws without its image, and its
+    note says so."""
+    corner_uv, out = {}, []
+    for s in shading:
+        if s.texture is not None:
+            uv_name = s.texture.source.uv_map
+            if uv_name not in corner_uv:
+                layer = mesh.uv_layers.get(uv_name) if uv_name else render_uv_layer(mesh)
+                if layer is not None:
+                    corner_uv[uv_name] = _foreach(layer.data, "uv", np.float32, 2)[tri_loops.reshape(-1)]
+            if uv_name not in corner_uv:
+                which = f"UV map '{uv_name}'" if uv_name else "UV map"
+                note = (f"{name}: material '{s.material}' maps image '{s.texture.source.image.name}' by a {which} the "
+                        f"mesh does not have; its Base Color is drawn as the image's mean colour")
+                s = dataclasses.replace(s, texture=None, note="; ".join(n for n in (s.note, note) if n))
+        out.append(s)
+    return out, corner_uv
+
+
 def light_of(ob, matrix):
     """The Light of a light object, or None for a type FrameData has no kind for. Kinds are the
     shaders' (shaders/frame_data.json, EL_LIGHT), keyed by Blender's light types."""
@@ -343,7 +375,21 @@ def light_of(ob, matrix):
     if data.type == 'SPOT':
         light.spot_cos = math.cos(data.spot_size / 2.0)
         light.spot_blend = float(data.spot_blend)
+    light.shadow = bool(getattr(data, "use_shadow", False))
+    light.radius = light_radius(data)
     return light
+
+
+def light_radius(data):
+    """The size of a light that softens its shadows (shaders/shadows.glsl): a point or spot
+    light's Radius; an area light's, as a disk of its area; a sun's angle as tan of its half."""
+    if data.type == 'SUN':
+        return math.tan(0.5 * float(getattr(data, "angle", 0.0)))
+    if data.type == 'AREA':
+        a = float(data.size)
+        b = float(data.size_y) if data.shape in {'RECTANGLE', 'ELLIPSE'} else a
+        return math.sqrt(a * b) / 2.0 if data.shape in {'DISK', 'ELLIPSE'} else math.sqrt(a * b / math.pi)
+    return float(getattr(data, "shadow_soft_size", 0.0))
 
 
 def world_ambient(scene):
@@ -434,7 +480,7 @@ def walk_instances(depsgraph, lookup, shown=None):
         extract = lookup(geometry_key(ob, materials), ob, inst, materials)
         if extract is not None:
             instances.append(Instance(extract, np.array(inst.matrix_world, dtype=np.float32), ob.pass_index,
-                                      holdout(inst)))
+                                      holdout(inst), bool(getattr(ob, "visible_shadow", True))))
     return instances, lights, not_drawn
 
 

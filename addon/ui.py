@@ -150,6 +150,12 @@ class EDGELIGHT_PT_render(EdgeLightPanel, bpy.types.Panel):
         col.prop(s, "samples", text="Samples")
         col.prop(s, "viewport_samples", text="Viewport")
         layout.prop(s, "highlights")
+        col = layout.column(heading="Shadows")
+        col.prop(s, "use_shadows", text="")
+        sub = col.column()
+        sub.active = s.use_shadows
+        sub.prop(s, "shadow_size", text="Resolution")
+        sub.prop(s, "soft_shadows")
         layout.prop(context.scene.render, "film_transparent")
         # Blender's own setting (Cycles shows it under Performance): keep the meshes' extractions
         # from one render job to the next (render_cache.py).

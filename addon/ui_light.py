@@ -1,6 +1,7 @@
 """The Light tab under EdgeLight: the settings of a light that EdgeLight reads (scene_sync.light_of)
-and nothing else. Blender's EEVEE light panel also shows diffuse / specular / volume factors,
-radius and shadows, which EdgeLight ignores, so it is not shown for EdgeLight."""
+and nothing else: colour, power, the spot's cone, and the shadow with the size that softens it
+(a point or spot light's Radius, an area light's size, a sun's Angle). Blender's EEVEE light panel
+also shows diffuse / specular / volume factors, which EdgeLight ignores, so it is not shown."""
 import bpy
 
 from .panel_base import EdgeLightPanel
@@ -27,3 +28,19 @@ class EDGELIGHT_PT_light(EdgeLightPanel, bpy.types.Panel):
             col.prop(light, "spot_size", text="Spot Size")
             col.prop(light, "spot_blend", text="Blend")
             col.prop(light, "show_cone")
+        col.separator()
+        if light.type == 'AREA':
+            col.prop(light, "shape")
+            sub = col.column(align=True)
+            if light.shape in {'SQUARE', 'DISK'}:
+                sub.prop(light, "size")
+            else:
+                sub.prop(light, "size", text="Size X")
+                sub.prop(light, "size_y", text="Y")
+        col.prop(light, "use_shadow", text="Shadow")
+        sub = col.column()
+        sub.active = light.use_shadow
+        if light.type == 'SUN':
+            sub.prop(light, "angle")
+        elif light.type != 'AREA':
+            sub.prop(light, "shadow_soft_size", text="Radius")

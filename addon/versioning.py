@@ -64,10 +64,16 @@ def _material_4_to_5(group):
         group.radius = RADIUS_LAYOUT_4
 
 
+def _scene_5_to_6(group):
+    """Layout 6 draws cast shadows (docs/shadows.md), on by default: a scene of an older layout
+    drew none, so it keeps Shadows off until the artist turns them on."""
+    group.use_shadows = False
+
+
 # kind -> {layout: step from that layout to the next}
 STEPS = {
     "material": {1: _material_1_to_2, 2: _material_2_to_3, 3: _material_3_to_4, 4: _material_4_to_5},
-    "scene": {},
+    "scene": {5: _scene_5_to_6},
 }
 
 
@@ -123,11 +129,16 @@ def made_with_old_defaults():
 
 def _keep_unstored_defaults():
     """A material that stores no EdgeLight value took every default. In a file made before
-    layout 5 that was the 1 cm radius: store it (the only default that has changed)."""
+    layout 5 that was the 1 cm radius: store it. A scene EdgeLight drew that stores nothing drew
+    no shadows then: store Shadows off (layout 6)."""
     count = 0
     for kind, group in _groups():
         if kind == "material" and not group.keys():
             _material_4_to_5(group)
+            group.settings_version = SETTINGS_VERSION
+            count += 1
+        elif kind == "scene" and not group.keys() and _uses_edgelight(group):
+            _scene_5_to_6(group)
             group.settings_version = SETTINGS_VERSION
             count += 1
     return count

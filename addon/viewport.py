@@ -15,7 +15,7 @@ import numpy as np
 
 from . import edge_choice, lines, material_inputs, scene_sync
 from .materials import shading_of
-from .passes import batches, camera, frame, frame_data, line_pass, toon, view_lines
+from .passes import batches, camera, frame, frame_data, line_pass, shadow_plan, toon, view_lines
 from .passes.targets import Targets
 from .radius_scale import radius_scale
 
@@ -220,7 +220,8 @@ class ViewportState:
         else:
             scene = scene_sync.SceneData(self.instances, self.lights, self.ambient, [])
             s = frame.Settings(samples=settings.viewport_samples, highlights=settings.highlights,
-                               transparent=depsgraph.scene.render.film_transparent, lines=self.line_settings)
+                               transparent=depsgraph.scene.render.film_transparent, lines=self.line_settings,
+                               shadows=shadow_plan.settings_of(settings))
             if self._update_view_lines(scene, camera, key, settings.highlights):
                 self.view_notes = list(scene.reports)  # said again only when the view lines are
             made = len(scene.reports)
@@ -314,9 +315,12 @@ class ViewportState:
 def scene_signature(state, scene):
     """Everything besides geometry and materials that the image depends on."""
     s = scene.edgelight
-    return (tuple((id(i.mesh), i.matrix.tobytes(), i.holdout) for i in state.instances), state.line_settings,
-            tuple((lt.kind, lt.color, lt.position, lt.direction, lt.spot_cos, lt.spot_blend) for lt in state.lights),
-            state.ambient, s.viewport_samples, s.highlights, scene.render.film_transparent)
+    return (tuple((id(i.mesh), i.matrix.tobytes(), i.holdout, i.casts_shadow) for i in state.instances),
+            state.line_settings,
+            tuple((lt.kind, lt.color, lt.position, lt.direction, lt.spot_cos, lt.spot_blend, lt.shadow, lt.radius)
+                  for lt in state.lights),
+            state.ambient, s.viewport_samples, s.highlights, scene.render.film_transparent,
+            shadow_plan.settings_of(s))
 
 
 def viewport_camera(rv3d, width, height):

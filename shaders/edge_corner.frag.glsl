@@ -93,6 +93,9 @@ void main()
   const vec2 offs[4] = vec2[4](vec2(-0.125, -0.375), vec2(0.375, -0.125), vec2(0.125, 0.375), vec2(-0.375, 0.125));
   vec3 sum = vec3(0.0);
   float covered = 0.0;
+#ifdef EL_SHADOWS
+  el_shadow_lift = corner_radius; /* the ball lies inside the sharp corner the maps hold */
+#endif
   for (int k = 0; k < 4; k++) {
     vec3 q = Q + offs[k].x * step_x + offs[k].y * step_y;
     vec3 d = persp ? normalize(q - frame.eye.xyz) : D;

@@ -11,6 +11,7 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
   for (int i = 0; i < count; i++) {
     vec3 L, E;
     light_at(i, X, L, E);
+    E *= el_light_shadow(i, X, L); /* the arc's own normal varies: it steps off towards the light */
     vec3 H = el_safe_normalize(L + V);
     float spec = el_arc_mean(g, H, edge, n);
     float diff = el_arc_mean(g, L, edge, 1.0);

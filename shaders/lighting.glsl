@@ -27,6 +27,15 @@ void light_at(int i, vec3 X, out vec3 L, out vec3 E)
   }
 }
 
+#ifndef EL_SHADOW_LOOKUP
+/* No shadows in this stage (shadows.glsl is listed before this file where they are looked up):
+ * every light reaches everything. */
+float el_light_shadow(int i, vec3 X, vec3 N)
+{
+  return 1.0;
+}
+#endif
+
 /* Normalised Blinn-Phong lobe: (n + 8) / (8 pi) keeps the reflected energy steady as n grows. */
 float blinn_norm(float n)
 {
@@ -35,7 +44,8 @@ float blinn_norm(float n)
 
 /* What light i adds at world point X with unit normal N seen along unit V: Lambert diffuse of
  * `albedo` plus the normalised Blinn-Phong lobe of `spec` and exponent n, nothing where the light
- * is behind the surface. The surface pass and the corner patches shade with it alike. */
+ * is behind the surface or in the shadow of something between (el_light_shadow). The surface
+ * pass and the corner patches shade with it alike. */
 vec3 el_blinn_phong(int i, vec3 X, vec3 N, vec3 V, vec3 albedo, vec3 spec, float n)
 {
   vec3 L, E;
@@ -44,6 +54,7 @@ vec3 el_blinn_phong(int i, vec3 X, vec3 N, vec3 V, vec3 albedo, vec3 spec, float
   if (nl <= 0.0) {
     return vec3(0.0);
   }
+  E *= el_light_shadow(i, X, N);
   vec3 H = normalize(L + V);
   return E * (albedo * (nl / 3.14159265) + spec * blinn_norm(n) * pow(max(dot(N, H), 0.0), n));
 }

@@ -81,6 +81,14 @@ void main()
   vec3 albedo = base_color.rgb;
   vec3 spec = spec_color.rgb;
   float n = spec_color.w;
+#ifdef EL_BASE_TEXTURE
+  /* An image in Base Color (materials.BaseTexture): base_color.rgb is 1 - metallic and
+   * spec_color.rgb the dielectric F0, so the texel splits into albedo and F0 as a base colour
+   * does (materials.shading_of). */
+  vec3 texel = el_base_texel(surface_uv).rgb;
+  spec += texel * (1.0 - base_color.r);
+  albedo = texel * base_color.rgb;
+#endif
   vec3 col = frame.ambient.rgb * (albedo + el_env_specular(spec, n, dot(N, V)));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {

@@ -14,7 +14,8 @@ float el_toon_light(vec3 N, vec3 X)
     vec3 L, E;
     light_at(i, X, L, E);
     float e = dot(E, vec3(0.2126, 0.7152, 0.0722));
-    sum += e * max(dot(N, L), 0.0);
+    /* A cast shadow lowers the ramp's input like turning away from the light: a cel shadow. */
+    sum += e * max(dot(N, L), 0.0) * el_light_shadow(i, X, N);
     strongest = max(strongest, e);
   }
   return strongest > 0.0 ? clamp(sum / strongest, 0.0, 1.0) : 0.0;

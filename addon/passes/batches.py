@@ -32,8 +32,17 @@ def surface_buffers(extract):
         order = np.where(flipped[:, None], np.array([0, 2, 1]), np.arange(3))
         corners = (tris[:, None] * 3 + order).reshape(-1)
         sign = np.where(np.repeat(flipped, 3), -1.0, 1.0).astype(np.float32)[:, None]
-        out[slot] = _vertbuf({"pos": extract.corner_pos[corners], "nor": extract.corner_nor[corners] * sign})
+        out[slot] = _vertbuf({"pos": extract.corner_pos[corners], "nor": extract.corner_nor[corners] * sign,
+                              "uv": slot_uv(extract, slot, corners)})
     return out
+
+
+def slot_uv(extract, slot, corners):
+    """The UVs of a slot's corners for its image (MeshExtract.corner_uv), zero without one: every
+    surface buffer has the attribute the surface program declares."""
+    texture = extract.slot_shading[slot].texture
+    uv = extract.corner_uv.get(texture.source.uv_map) if texture is not None else None
+    return uv[corners] if uv is not None else np.zeros((len(corners), 2), np.float32)
 
 
 def _triangles_batch(vbo, triangles):

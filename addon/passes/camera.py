@@ -13,6 +13,18 @@ class Camera:
     orthographic: bool
     width: int
     height: int
+    # A region's camera: the whole frame's projection and where the region starts in it (pixels
+    # from the bottom left), so that what is fitted to the frame (a sun's shadow cascades, the
+    # soft shadow's noise) is the same in every region. None, (0, 0): the camera is the frame's.
+    frame_projection: np.ndarray = None
+    pixel_origin: tuple = (0, 0)
+
+    @property
+    def whole(self):
+        """The whole frame's camera (itself when it is not a region's)."""
+        if self.frame_projection is None:
+            return self
+        return Camera(self.view, self.frame_projection, self.eye, self.view_dir, self.orthographic, self.width, self.height)
 
     @property
     def px_per_unit(self):
@@ -20,15 +32,18 @@ class Camera:
         return float(self.projection[0, 0]) * self.width / 2.0
 
 
-def from_view(view, projection, orthographic, width, height):
+def from_view(view, projection, orthographic, width, height, frame_projection=None, pixel_origin=(0, 0)):
     """The one camera builder (the final render's, the viewport's, the SVG export's): the camera
     of world -> view matrix `view` and view -> clip `projection` (4 x 4 each), its eye and the
-    unit direction it looks along read from the view's inverse."""
+    unit direction it looks along read from the view's inverse. A region's camera also takes the
+    whole frame's projection and the region's first pixel (Camera.frame_projection)."""
     view = np.asarray(view, np.float64)
     world = np.linalg.inv(view)
     forward = -world[:3, 2] / np.linalg.norm(world[:3, 2])
     return Camera(view=view, projection=np.asarray(projection, np.float64), eye=tuple(world[:3, 3]),
-                  view_dir=tuple(forward), orthographic=bool(orthographic), width=int(width), height=int(height))
+                  view_dir=tuple(forward), orthographic=bool(orthographic), width=int(width), height=int(height),
+                  frame_projection=None if frame_projection is None else np.asarray(frame_projection, np.float64),
+                  pixel_origin=(int(pixel_origin[0]), int(pixel_origin[1])))
 
 
 def halton(i, base):

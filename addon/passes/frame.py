@@ -11,7 +11,17 @@ from dataclasses import dataclass
 import gpu
 import numpy as np
 
-from . import batches, composite_pass, edge_pass, frame_data, line_pass, surface_pass, view_lines
+from . import (
+    batches,
+    composite_pass,
+    edge_pass,
+    frame_data,
+    line_pass,
+    shadow_pass,
+    shadow_plan,
+    surface_pass,
+    view_lines,
+)
 from .camera import Camera, jitter, jittered_projection  # noqa: F401 - Camera: engine.py and svg_output.py
 from .frame_data import MAX_LIGHTS  # noqa: F401 - engine.py reports past the light limit
 from .targets import Targets, read, unbind_targets
@@ -25,6 +35,7 @@ class Settings:
     lines: object = None          # lines.LineSettings, or None: no lines
     ids: bool = False             # the first sample writes ids even without edges or lines (Object Index)
     lines_in_combined: bool = True  # False: the ink goes to the Lines pass only (its own pass)
+    shadows: object = None        # shadow_plan.ShadowSettings, or None: no light casts a shadow
 
 
 @dataclass
@@ -53,18 +64,23 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
     # samples far faster than llvmpipe draws them, and a cancel would land after all of them.
     between = CancelCheck(targets.result, cancelled) if cancelled else None
     culls = surface_pass.cull_modes(scene, camera)
+    shadows = shadow_plan.plan(scene, camera, settings.shadows) if settings.shadows else None
+    shadow_maps = shadow_pass.draw(shadows, scene, gpu_meshes, targets.shadow_maps) if shadows else None
+    if shadows and shadows.left_out and scene.reports is not None:
+        scene.reports.append(f"{shadows.left_out} light{'s' if shadows.left_out != 1 else ''} cast no shadow: "
+                             f"the lights before took all {shadow_plan.MAX_LAYERS} shadow layers")
     for s in range(samples):
         if cancelled and (cancelled() if s == 0 else between()):
             break
         projection = jittered_projection(np.asarray(camera.projection, np.float64), camera.width, camera.height, *jitter(s))
-        data = frame_data.pack(camera, projection, scene)
+        data = frame_data.pack(camera, projection, scene, shadows, s)
         ubo = gpu.types.GPUUniformBuf(gpu.types.Buffer('FLOAT', data.size, data))
         whiteout = settings.lines is not None and settings.lines.whiteout
         # The first sample's surface also writes ids for the edge and line passes, which run on
         # it alone, and for the Object Index pass.
         surface_pass.draw_surface(targets, scene, gpu_meshes, ubo, whiteout, ids=s == 0 and (
             settings.ids or settings.lines is not None or (settings.highlights and not whiteout)),
-            rounded=settings.highlights and not whiteout, culls=culls)
+            rounded=settings.highlights and not whiteout, culls=culls, shadow_maps=shadow_maps)
         if s == 0 and first_sample:
             first_sample()
         # The edge and line passes run once, on the unjittered first sample: their coverage is
@@ -72,7 +88,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         # only the surface is re-jittered (docs/addon.md).
         if s == 0:
             if settings.highlights and not whiteout:
-                edge_pass.draw_highlights(targets, scene, gpu_meshes, ubo, stats)
+                edge_pass.draw_highlights(targets, scene, gpu_meshes, ubo, stats, shadow_maps)
             else:
                 with targets.highlight_fb.bind():
                     targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))

@@ -14,10 +14,12 @@ def mat4(m):
     return np.asarray(m, dtype=np.float32).T.reshape(-1)
 
 
-def pack(camera, projection, scene):
-    """The FrameData block's floats (members: shaders/frame_data.json)."""
+def pack(camera, projection, scene, shadows=None, sample=0):
+    """The FrameData block's floats (members: shaders/frame_data.json). `shadows`: the frame's
+    shadow_plan.ShadowPlan (None: no light casts); `sample`: the sample's number."""
     lights = scene.lights[:MAX_LIGHTS]
     return FRAME_DATA.pack({
+        **_shadow_members(shadows, sample),
         "view": mat4(camera.view),
         "projection": mat4(projection),
         "eye": (*camera.eye, 0.0 if camera.orthographic else 1.0),
@@ -25,8 +27,20 @@ def pack(camera, projection, scene):
         "viewport": (camera.width, camera.height, 1.0 / camera.width, 1.0 / camera.height),
         "ambient": (*scene.ambient, 1.0),
         "camera": (camera.px_per_unit, len(lights), 0.0, 0.0),
+        "frame_pixel": (*getattr(camera, "pixel_origin", (0, 0)), 0.0, 0.0),
         "light_color": [(*light.color, light.kind) for light in lights],
         "light_position": [(*light.position, 0.0) for light in lights],
         "light_direction": [(*light.direction, light.spot_cos) for light in lights],
         "light_spot": [(light.spot_blend, 0.0, 0.0, 0.0) for light in lights],
     })
+
+
+def _shadow_members(plan, sample):
+    if plan is None or not plan.layers:
+        return {}
+    return {
+        "light_shadow": [(ls.first, ls.kind, ls.count, ls.radius) if ls else (0.0, 0.0, 0.0, 0.0) for ls in plan.lights],
+        "shadow_split": [(tuple(ls.splits) + (0.0,) * 4)[:4] if ls else (0.0,) * 4 for ls in plan.lights],
+        "shadow_map": (plan.size, 1.0 if plan.soft else 0.0, float(sample), plan.per_row),
+        "shadow_matrix": [mat4(m) for m in plan.matrices],
+    }

@@ -3,12 +3,13 @@ whiteout), into the surface targets; with ids, which instance and face covers ea
 import gpu
 import numpy as np
 
-from .. import closed_surfaces, rounded_outline
+from .. import closed_surfaces, rounded_outline, textures
 from . import frame_data, pass_state, shader_lib, shader_specs, toon
 from .targets import surface_outputs
 
-# The surface program's shading modes (shaders/surface_modes.json).
+# The surface program's shading modes and an image's extensions (shaders/surface_modes.json).
 SURFACE_MODES = shader_specs.enum("surface_modes.json", "EL_SURFACE_MODE")
+EXTEND = shader_specs.enum("surface_modes.json", "EL_EXTEND")
 
 
 def shading_uniforms(shader, s):
@@ -65,7 +66,39 @@ def cull_modes(scene, camera):
     return out
 
 
-def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False, culls=None):
+def texture_key(s, mode):
+    """(Closest, extension) of the variant that draws a slot's image into Base Color (its
+    materials.BaseTexture, in the Phong mode), or None."""
+    if s.texture is None or mode != SURFACE_MODES["PHONG"]:
+        return None
+    source = s.texture.source
+    return (int(source.closest), EXTEND[source.extension])
+
+
+def texture_defines(key):
+    """The defines of the variant drawing an image with texture_key `key` (shaders/textures.glsl)."""
+    if key is None:
+        return {}
+    return {"EL_BASE_TEXTURE": 1, "EL_TEX_CLOSEST": key[0], "EL_TEX_EXTEND": key[1]}
+
+
+def textured_uniforms(shader, s):
+    """A textured slot's colours (materials.BaseTexture): 1 - metallic, which the texel scales
+    into the albedo, and the dielectric F0, to which the texel's metallic part is added."""
+    t = s.texture
+    keep = 1.0 - t.metallic
+    shader_lib.set_uniform(shader, "base_color", (keep, keep, keep, s.alpha))
+    shader_lib.set_uniform(shader, "spec_color", (*t.f0, s.shininess))
+    shader_lib.set_sampler(shader, "base_tex", textures.gpu_texture(t.source.image))
+
+
+def shadow_defines(shadow_maps):
+    """The define of the variant that looks the lights' shadow maps up (shaders/shadows.glsl)."""
+    return {"EL_SHADOWS": 1} if shadow_maps is not None else {}
+
+
+def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False, culls=None,
+                 shadow_maps=None):
     """One program per shading mode in use (EL_SURFACE_MODE is fixed when it is built: a uniform
     branch would make every fragment pay for every mode on llvmpipe). With `ids`, the variant
     that also writes which instance and face covers each pixel (the line pass's visibility,
@@ -75,7 +108,7 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
     (batches.GpuMesh.outline), and those that list more edges than its vertex shader judges in
     a variant that judges the rest per pixel (EL_OUTLINE_MORE). `culls` (cull_modes), per instance: a closed surface's back
     faces culled where they cannot show (closed_surfaces.py), since the strips would show its
-    inside."""
+    inside. `shadow_maps`: the frame's (shadow_pass.draw), or None where no light casts."""
     draws, firsts = {}, {}
     for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
@@ -89,17 +122,20 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
             ids_of = (float(index + 1), float(first.get(slot, 0)))
             # A holdout has no bands, so nothing fills the strips the rounded outline leaves out.
             outline = gm.outline.get(slot) if rounded and not inst.holdout else None
+            tex = texture_key(s, mode)
             if outline is None:
-                draws.setdefault((mode, 0), []).append((inst.matrix, s, batch, ids_of, None, cull))
+                draws.setdefault((mode, 0, tex), []).append((inst.matrix, s, batch, ids_of, None, cull))
                 continue
-            textures, listed, rest, more = outline
+            sides, listed, rest, more = outline
             for kind, part in ((0, rest), (1, listed), (2, more)):
                 if part is not None:
-                    draws.setdefault((mode, kind), []).append((inst.matrix, s, part, ids_of, textures if kind else None, cull))
+                    draws.setdefault((mode, kind, tex), []).append((inst.matrix, s, part, ids_of, sides if kind else None, cull))
     outputs = surface_outputs(targets, ids)
     with pass_state.drawing("surface", targets.surface_ids_fb if ids else targets.surface_fb):
-        for (mode, outline), items in sorted(draws.items()):
-            defines = {"EL_SURFACE_MODE": mode, **outputs}
+        for (mode, outline, tex), items in sorted(draws.items(), key=lambda kv: (kv[0][0], kv[0][1], kv[0][2] or ())):
+            defines = {"EL_SURFACE_MODE": mode, **outputs, **texture_defines(tex)}
+            if mode not in (SURFACE_MODES["HOLDOUT"], SURFACE_MODES["WHITEOUT"]):
+                defines.update(shadow_defines(shadow_maps))
             if outline:
                 defines.update(EL_ROUNDED_OUTLINE=1, **rounded_outline.layout_defines())
             if outline == 2:
@@ -107,11 +143,16 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
             shader = shader_lib.get("surface", defines)
             shader.bind()
             shader.uniform_block("frame", ubo)
+            if "EL_SHADOWS" in defines:
+                shader_lib.set_sampler(shader, "shadow_maps", shadow_maps)
             for matrix, s, batch, surface_ids, sides, cull in items:
                 gpu.state.face_culling_set(cull)
                 shader_lib.set_uniform(shader, "model", frame_data.mat4(matrix))
                 shader_lib.set_uniform(shader, "surface_ids", surface_ids)
-                shading_uniforms(shader, s)
+                if tex is None:
+                    shading_uniforms(shader, s)
+                else:
+                    textured_uniforms(shader, s)
                 _toon_uniforms(shader, s, mode)
                 if sides is not None:
                     shader_lib.set_sampler(shader, "outline_edges", sides[0])

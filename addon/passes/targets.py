@@ -5,6 +5,7 @@ import numpy as np
 
 from .. import compat
 from . import batches, pass_state, shader_lib, shader_specs
+from .shadow_pass import ShadowMaps
 
 
 class Targets:
@@ -27,6 +28,7 @@ class Targets:
         self.result_fb = pass_state.framebuffer(self, "composite", composite_outputs(self))
         self.line_fb = gpu.types.GPUFrameBuffer(depth_slot=self.line_depth, color_slots=(self.lines,))
         self.lines_empty = False  # the line target holds no stroke (cleared, none drawn since)
+        self.shadow_maps = ShadowMaps()  # the lights' shadow maps, of their own size (shadow_pass.py)
 
 
 def surface_outputs(targets, ids):

@@ -76,6 +76,7 @@ SurfaceCorners surface_corners(const LoadedMesh& m, float smooth_deg) {
             }
         }
     }
+    out.uv.assign(6 * tris, 0.0f);
     return out;
 }
 

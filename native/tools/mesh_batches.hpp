@@ -11,9 +11,10 @@
 
 namespace el_tools {
 
-// Corner arrays of the surface pass (3 corners per triangle; vertex_in "pos", "nor").
+// Corner arrays of the surface pass (3 corners per triangle; vertex_in "pos", "nor", "uv").
 struct SurfaceCorners {
     std::vector<float> pos, nor;  // xyz per corner
+    std::vector<float> uv;        // 2 per corner, zero: this renderer draws no image (EL_BASE_TEXTURE)
 };
 
 // Rounded edges: manifold, not degenerate, angle between face normals above the threshold (the

@@ -59,7 +59,11 @@ class FrameData(unittest.TestCase):
         self.assertEqual(self.block.members["view"], (0, 1, 16))
         self.assertEqual(self.block.members["eye"], (32, 1, 4))
         self.assertEqual(self.block.members["light_color"], (52, 16, 4))
-        self.assertEqual(self.block.size, 308)
+        # The shadows' members follow the lights' (docs/shadows.md): 16 light_shadow, 16
+        # shadow_split, shadow_map, frame_pixel, then 32 matrices.
+        self.assertEqual(self.block.members["light_shadow"], (308, 16, 4))
+        self.assertEqual(self.block.members["shadow_matrix"], (444, 32, 16))
+        self.assertEqual(self.block.size, 956)
 
     def test_pack_places_values_and_refuses_what_does_not_fit(self):
         data = self.block.pack({"camera": (2.0, 3.0, 0.0, 0.0), "light_position": [(1, 2, 3, 0), (4, 5, 6, 0)]})

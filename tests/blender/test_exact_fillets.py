@@ -45,7 +45,9 @@ def valley(fold_deg, radius=0.0, arc_segments=64):
 
 
 def scene(fold_deg, width_px, camera, exact_radius=0.0, bevel=0, highlights=True, samples=8, circular=False):
-    helpers.empty_scene(*RESOLUTION, samples=samples)
+    # Shadows off: these hold the band's light to true fillets. A true fillet also changes the
+    # shadows the fold casts on itself, which maps drawn from the sharp mesh cannot (docs/shadows.md).
+    helpers.empty_scene(*RESOLUTION, samples=samples, use_shadows=False)
     helpers.add_camera(camera, target=(0.0, 0.0, 0.0))
     radius = zoo.radius_at_width(width_px, camera, RESOLUTION[0])
     # A glint a quarter of the way across the fillet's arc of normals.

@@ -42,7 +42,7 @@ class MaterialInputs(unittest.TestCase):
         assign(mat)
         self.assertEqual(warnings(helpers.render(), "does not draw"), [])
 
-    def test_image_texture_and_emission_said_once_per_material(self):
+    def test_emission_and_an_image_through_a_node_said_once_per_material(self):
         scene()
         mat = zoo.material("Painted", (0.5, 0.4, 0.3))
         mat.use_nodes = True
@@ -58,11 +58,21 @@ class MaterialInputs(unittest.TestCase):
         assign(mat, copies=2)  # two objects, one material: one line
         lines = warnings(helpers.render(), "material 'Painted'")
         self.assertEqual(len(lines), 1, lines)
-        self.assertIn("Base Color from Image Texture", lines[0])
-        self.assertIn("its value (0.5, 0.4, 0.3) is drawn", lines[0])
+        # The image straight into Base Color is drawn (test_textures.py): only the emission is said.
+        self.assertNotIn("Base Color from", lines[0])
         self.assertIn("Emission (colour (1, 0.5, 0), strength 5)", lines[0])
         unread = self.inputs().unread_inputs(node)
-        self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Base Color: Image Texture, Emission")
+        self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Emission")
+        # Through a node EdgeLight does not evaluate, the image is not drawn, and that is said.
+        gamma = tree.nodes.new("ShaderNodeGamma")
+        tree.links.new(tex.outputs["Color"], gamma.inputs["Color"])
+        tree.links.new(gamma.outputs["Color"], node.inputs["Base Color"])
+        lines = warnings(helpers.render(), "material 'Painted'")
+        self.assertEqual(len(lines), 1, lines)
+        self.assertIn("Base Color from Gamma", lines[0])
+        self.assertIn("its value (0.5, 0.4, 0.3) is drawn", lines[0])
+        unread = self.inputs().unread_inputs(node)
+        self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Base Color: Gamma, Emission")
 
     def test_other_surface_shader_is_named_and_the_render_goes_on(self):
         scene()

@@ -117,6 +117,29 @@ class RampStopsBecomeAColourRamp(unittest.TestCase):
         self.assertEqual(len(groups), 2, "one ramp per toon material, nothing else added")
 
 
+class ShadowsAreNewInLayout6(unittest.TestCase):
+    def test_a_scene_of_layout_5_keeps_drawing_no_shadows_and_a_new_one_draws_them(self):
+        """Layout 6 added cast shadows, on by default (versioning._scene_5_to_6): a scene saved
+        with layout 5 drew none and opens with Shadows off; a scene made now has them on."""
+        scene = helpers.empty_scene(64, 64)
+        self.assertTrue(scene.edgelight.use_shadows, "on for a scene made now")
+        scene.edgelight.samples = 2
+        path = os.path.join(tempfile.mkdtemp(), "layout5.blend")
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        self.assertTrue(bpy.context.scene.edgelight.use_shadows, "a current file keeps its Shadows")
+        bpy.context.scene.edgelight["settings_version"] = 5  # as the layout-5 add-on stamped it
+        bpy.ops.wm.save_as_mainfile(filepath=path)
+        bpy.ops.wm.open_mainfile(filepath=path)
+        group = bpy.context.scene.edgelight
+        self.assertFalse(group.use_shadows)
+        self.assertEqual(group.samples, 2)
+        self.assertEqual(group.get("settings_version"), current_layout())
+        for sample in (LAYOUT1, os.path.join(helpers.SAMPLES, "cube.blend")):  # older layouts: none either
+            bpy.ops.wm.open_mainfile(filepath=sample)
+            self.assertFalse(bpy.context.scene.edgelight.use_shadows, sample)
+
+
 class CurrentFilesAreStamped(unittest.TestCase):
     def test_save_stamps_groups_that_store_settings(self):
         helpers.open_sample("cube")

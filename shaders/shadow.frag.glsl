@@ -1,0 +1,5 @@
+/* Shadow pass: the depth the vertex stage gave; the depth test keeps the nearest surface. */
+void main()
+{
+  out_depth = light_depth;
+}

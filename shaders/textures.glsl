@@ -1,0 +1,35 @@
+/* An Image Texture drawn into Base Color (materials.BaseTexture; EL_BASE_TEXTURE): `base_tex`
+ * is Blender's own GPU texture of the image, whose colour space it decodes as EEVEE's. Texels
+ * are fetched and filtered here rather than by the sampler's state, which the gpu module does
+ * not set alike on every version: Closest takes the texel under the UV (EL_TEX_CLOSEST), Linear
+ * blends the four around it; EL_TEX_EXTEND is how the image continues past [0, 1]
+ * (EL_EXTEND_*, shaders/surface_modes.json). No mipmaps: a minified image aliases, which the
+ * jittered samples average. A UV of (0, 0) is the image's first pixel, bottom left. */
+#ifdef EL_BASE_TEXTURE
+vec4 el_base_fetch(ivec2 p, ivec2 size)
+{
+  if (EL_TEX_EXTEND == EL_EXTEND_REPEAT) {
+    p -= size * ivec2(floor(vec2(p) / vec2(size))); /* floor, not %: negative texels wrap too */
+  }
+  return texelFetch(base_tex, clamp(p, ivec2(0), size - 1), 0);
+}
+
+vec4 el_base_texel(vec2 uv)
+{
+  if (EL_TEX_EXTEND == EL_EXTEND_CLIP && (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))))) {
+    return vec4(0.0); /* Clip: transparent black outside the image */
+  }
+  ivec2 size = textureSize(base_tex, 0);
+  vec2 p = uv * vec2(size);
+#if EL_TEX_CLOSEST
+  return el_base_fetch(ivec2(floor(p)), size);
+#else
+  p -= 0.5;
+  ivec2 b = ivec2(floor(p));
+  vec2 f = p - floor(p);
+  vec4 lo = mix(el_base_fetch(b, size), el_base_fetch(b + ivec2(1, 0), size), f.x);
+  vec4 hi = mix(el_base_fetch(b + ivec2(0, 1), size), el_base_fetch(b + ivec2(1, 1), size), f.x);
+  return mix(lo, hi, f.y);
+#endif
+}
+#endif
