@@ -12,11 +12,17 @@
  * pass's Blinn-Phong (lighting.glsl), the specular tinted as the bands' (edge_shading.glsl). */
 vec3 el_corner_colour(vec3 X, vec3 N, vec3 V)
 {
-  vec3 col = frame.ambient.rgb *
-             (base_color.rgb + tint.rgb * el_env_specular(spec_color.rgb, spec_color.w, dot(N, V)));
+  vec3 albedo = base_color.rgb, f0 = spec_color.rgb;
+#ifdef EL_BASE_TEXTURE
+  /* Under an image, the texel at the corner's vertex, split as the surface pass splits it. */
+  vec3 texel = el_base_texel(corner_uv).rgb;
+  f0 += texel * (1.0 - base_color.r);
+  albedo = texel * base_color.rgb;
+#endif
+  vec3 col = frame.ambient.rgb * (albedo + tint.rgb * el_env_specular(f0, spec_color.w, dot(N, V)));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
-    col += el_blinn_phong(i, X, N, V, base_color.rgb, tint.rgb * spec_color.rgb, spec_color.w);
+    col += el_blinn_phong(i, X, N, V, albedo, tint.rgb * f0, spec_color.w);
   }
   return col;
 }

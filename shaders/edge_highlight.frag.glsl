@@ -35,6 +35,9 @@ void main()
   float dist = persp ? el_safe_length(to_eye) : 1.0;
   vec3 V = el_safe_normalize(to_eye);
 
+#ifdef EL_BASE_TEXTURE
+  el_band_texel = el_base_texel(mix(edge_uv.xy, edge_uv.zw, clamp(edge_t, 0.0, 1.0))).rgb;
+#endif
   float world_per_px = dist / frame.camera.x;
   float across = dot(pc - edge_screen.xy, edge_screen.zw);
   float inv_surface = texelFetch(surface_depth, ivec2(pc), 0).r;

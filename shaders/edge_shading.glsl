@@ -1,3 +1,27 @@
+/* The material's albedo and F0 on the band: its colours, or under an image (EL_BASE_TEXTURE)
+ * the texel where the pixel's band lies along the edge (el_band_texel, set by the pass from
+ * edge_uv), split as the surface pass splits it (base_color.rgb 1 - metallic, spec_color.rgb the
+ * dielectric F0: materials.BaseTexture). */
+vec3 el_band_texel = vec3(0.0);
+
+vec3 el_albedo()
+{
+#ifdef EL_BASE_TEXTURE
+  return el_band_texel * base_color.rgb;
+#else
+  return base_color.rgb;
+#endif
+}
+
+vec3 el_f0()
+{
+#ifdef EL_BASE_TEXTURE
+  return spec_color.rgb + el_band_texel * (1.0 - base_color.r);
+#else
+  return spec_color.rgb;
+#endif
+}
+
 /* Colour of a rounded edge at world point X seen along unit V: ambient plus, per light, the
  * diffuse and specular arc means (highlight_arc.glsl) over the arc `g` (the part of it a pixel
  * sees: edge_band_pixel.glsl). */
@@ -6,7 +30,7 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
   float n = spec_color.w;
   /* The world on the arc: its lobe's albedo at the arc's mean cosine to the eye. */
   float nv = el_arc_mean(g, V, edge, 1.0);
-  vec3 col = frame.ambient.rgb * (base_color.rgb + tint.rgb * el_env_specular(spec_color.rgb, n, nv));
+  vec3 col = frame.ambient.rgb * (el_albedo() + tint.rgb * el_env_specular(el_f0(), n, nv));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
     vec3 L, E;
@@ -15,7 +39,7 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
     vec3 H = el_safe_normalize(L + V);
     float spec = el_arc_mean(g, H, edge, n);
     float diff = el_arc_mean(g, L, edge, 1.0);
-    col += E * (base_color.rgb * (diff / 3.14159265) + tint.rgb * spec_color.rgb * blinn_norm(n) * spec);
+    col += E * (el_albedo() * (diff / 3.14159265) + tint.rgb * el_f0() * blinn_norm(n) * spec);
   }
   return col;
 }
@@ -24,10 +48,10 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
  * shades it (Blinn-Phong mode): what a band replaces of it (el_faces_under_band). */
 vec3 el_face_colour(vec3 N, vec3 X, vec3 V)
 {
-  vec3 col = frame.ambient.rgb * (base_color.rgb + el_env_specular(spec_color.rgb, spec_color.w, dot(N, V)));
+  vec3 col = frame.ambient.rgb * (el_albedo() + el_env_specular(el_f0(), spec_color.w, dot(N, V)));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
-    col += el_blinn_phong(i, X, N, V, base_color.rgb, spec_color.rgb, spec_color.w);
+    col += el_blinn_phong(i, X, N, V, el_albedo(), el_f0(), spec_color.w);
   }
   return col;
 }

@@ -124,11 +124,60 @@ def edge_batches(extract):
         ends = e.ends if e.ends is not None else np.full((n, 4), band_ends.SQUARE, np.float32)
         turn = e.turn if e.turn is not None else np.zeros((n, 6), np.float32)
         vbo = _vertbuf({"p0": rep(e.p0), "p1": rep(e.p1), "n1": rep(e.n1), "n2": rep(e.n2), "faces": rep(faces),
-                        "corner": corner, "ends": rep(ends), "turn1": rep(turn[:, :3]), "turn2": rep(turn[:, 3:])})
+                        "corner": corner, "ends": rep(ends), "turn1": rep(turn[:, :3]), "turn2": rep(turn[:, 3:]),
+                        "uv": rep(edge_uv(extract, slot, e))})
         edge = np.repeat(np.arange(n), 6)
         idx = vid(edge, np.tile(tris, n)).astype(np.int32).reshape(-1, 3)
         out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
     return out
+
+
+def _slot_uv(extract, slot):
+    """The corner UVs of the slot's image (MeshExtract.corner_uv), or None."""
+    texture = extract.slot_shading[slot].texture
+    return extract.corner_uv.get(texture.source.uv_map) if texture is not None else None
+
+
+def _uv_at(extract, uv, tri, verts):
+    """(N, 2) the UV at mesh vertex verts[i] on triangle tri[i] (one of its corners)."""
+    c = np.argmax(extract.edge_data.tri_verts[tri] == np.asarray(verts)[:, None], axis=1)
+    return uv[3 * tri + c]
+
+
+def _face_triangles(extract, slot, ids):
+    """Per row of surface ids (N, k >= 2): the triangle of its first id when that face is the
+    slot's, else of its second."""
+    d = extract.edge_data
+    tri_of = np.zeros(int(d.surface_id.max(initial=0)) + 1, np.int64)
+    tri_of[d.surface_id] = np.arange(len(d.surface_id))
+    ids = np.clip(np.asarray(ids, np.int64), 0, len(tri_of) - 1)
+    first = tri_of[ids[:, 0]]
+    return np.where((ids[:, 0] > 0) & (d.tri_slot[first] == slot), first, tri_of[ids[:, 1]])
+
+
+def _has_uv(extract, slot, faces, verts):
+    d = extract.edge_data
+    return (_slot_uv(extract, slot) is not None and faces is not None and verts is not None and d is not None
+            and d.tri_verts is not None and d.surface_id is not None)
+
+
+def edge_uv(extract, slot, e):
+    """(N, 4) the UV of the slot's image at each edge's p0 and p1, on its face of the slot (its
+    first face, else its second): the band takes the image's colour along the edge
+    (edge_shading.glsl's el_albedo). Zero when the slot draws no image."""
+    if not _has_uv(extract, slot, e.faces, e.verts):
+        return np.zeros((len(e), 4), np.float32)
+    uv, tri = _slot_uv(extract, slot), _face_triangles(extract, slot, e.faces)
+    return np.concatenate([_uv_at(extract, uv, tri, e.verts[:, 0]), _uv_at(extract, uv, tri, e.verts[:, 1])], axis=1)
+
+
+def corner_uv(extract, slot, c):
+    """(K, 2) the UV of the slot's image at each corner patch's vertex, on the first of its
+    edges' faces that is the slot's; zero when the slot draws no image."""
+    if not _has_uv(extract, slot, c.faces, c.vertex):
+        return np.zeros((len(c), 2), np.float32)
+    uv = _slot_uv(extract, slot)
+    return _uv_at(extract, uv, _face_triangles(extract, slot, c.faces), c.vertex)
 
 
 _SQUARE = np.array([[-1, -1], [1, -1], [-1, 1], [1, 1]], dtype=np.float32)
@@ -149,7 +198,7 @@ def corner_batches(extract):
         corner[:, 3] = rep(c.fold)
         vbo = _vertbuf({"v": rep(c.position), "m1": rep(c.normals[:, 0]), "m2": rep(c.normals[:, 1]),
                         "m3": rep(c.normals[:, 2]), "corner": corner, "faces_a": rep(c.faces[:, :3]),
-                        "faces_b": rep(c.faces[:, 3:])})
+                        "faces_b": rep(c.faces[:, 3:]), "uv": rep(corner_uv(extract, slot, c))})
         idx = (np.arange(n)[:, None] * 4 + np.array([0, 1, 3, 0, 3, 2])).astype(np.int32).reshape(-1, 3)
         out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
     return out

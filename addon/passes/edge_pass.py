@@ -2,7 +2,14 @@
 method (shaders/edge_highlight.*), premultiplied into the highlight target, once per frame; then
 the corner patches over them (batches.corner_batches, shaders/edge_corner.*)."""
 from . import frame_data, pass_state, shader_lib, table
-from .surface_pass import SURFACE_MODES, shading_uniforms, shadow_defines
+from .surface_pass import (
+    SURFACE_MODES,
+    shading_uniforms,
+    shadow_defines,
+    texture_defines,
+    texture_key,
+    textured_uniforms,
+)
 
 
 def draw_highlights(targets, scene, gpu_meshes, ubo, stats, shadow_maps=None):
@@ -16,19 +23,27 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats, shadow_maps=None):
     with pass_state.drawing("edge_highlight", targets.highlight_fb):
         # A Blinn-Phong material's bands replace the sharp faces under them (el_faces_under_band);
         # a toon material's faces are shaded otherwise, so its bands blend over the pixel.
-        for phong in (True, False):
-            def slots(gm, phong=phong):
-                return {k: b for k, b in gm.edges.items() if _is_phong(gm.extract.slot_shading[k]) == phong}
+        # A slot drawing an image in Base Color has its own variant, the texel along the edge
+        # (surface_pass.texture_key).
+        keys = {(_is_phong(s), texture_key(s, _mode(s))) for inst in scene.instances
+                for k, s in enumerate(gpu_meshes[id(inst.mesh)].extract.slot_shading)
+                if k in gpu_meshes[id(inst.mesh)].edges}
+        for phong, image in sorted(keys, key=lambda k: (not k[0], k[1] or ())):
+            def slots(gm, phong=phong, image=image):
+                return {k: b for k, b in gm.edges.items()
+                        if (_is_phong(gm.extract.slot_shading[k]), texture_key(gm.extract.slot_shading[k],
+                                                                                 _mode(gm.extract.slot_shading[k]))) == (phong, image)}
             if not any(slots(gpu_meshes[id(inst.mesh)]) for inst in scene.instances):
                 continue
-            shader = shader_lib.get("edge_highlight", {**defines, "EL_FACES_UNDER": 1} if phong else defines)
+            variant = {**defines, **({"EL_FACES_UNDER": 1} if phong else {}), **texture_defines(image)}
+            shader = shader_lib.get("edge_highlight", variant)
             shader.bind()
             shader.uniform_block("frame", ubo)
             pass_state.bind_table(shader, "edge_highlight", tex, info)
             pass_state.bind_inputs(shader, "edge_highlight", targets)
             if shadow_maps is not None:
                 shader_lib.set_sampler(shader, "shadow_maps", shadow_maps)
-            for gm, slot in _draw_per_slot(shader, scene, gpu_meshes, slots):
+            for gm, slot in _draw_per_slot(shader, scene, gpu_meshes, slots, textured=image is not None):
                 stats.edges_drawn += len(gm.extract.edges[slot])
     draw_corners(targets, scene, gpu_meshes, ubo, shadow_maps)
 
@@ -37,25 +52,42 @@ def _is_phong(shading):
     return int(shading.toon.mode) == SURFACE_MODES["PHONG"]
 
 
+def _mode(shading):
+    return int(shading.toon.mode)
+
+
 def draw_corners(targets, scene, gpu_meshes, ubo, shadow_maps=None):
     """Each instance's corner patches into targets.highlight, replacing the bands' mitres under
-    them: the target scaled by 1 - each patch's coverage, then the patches added."""
+    them: the target scaled by 1 - each patch's coverage, then the patches added (a slot drawing
+    an image in its own variant, the texel at the corner's vertex)."""
     if not any(gpu_meshes[id(inst.mesh)].corners for inst in scene.instances):
         return
+
+    def key_of(gm, k):
+        return texture_key(gm.extract.slot_shading[k], SURFACE_MODES["PHONG"]) or ()
+
+    keys = sorted({key_of(gm, k) for gm in (gpu_meshes[id(inst.mesh)] for inst in scene.instances) for k in gm.corners})
     for pass_name, defines in (("edge_corner_cover", {"EL_CORNER_COVER": 1}), ("edge_corner", shadow_defines(shadow_maps))):
-        shader = shader_lib.get("edge_corner", defines)
+        cover = pass_name != "edge_corner"
         with pass_state.drawing(pass_name, targets.highlight_fb):
-            shader.bind()
-            shader.uniform_block("frame", ubo)
-            if defines and "EL_SHADOWS" in defines:
-                shader_lib.set_sampler(shader, "shadow_maps", shadow_maps)
-            pass_state.bind_inputs(shader, pass_name, targets)
-            _draw_per_slot(shader, scene, gpu_meshes, lambda gm: gm.corners)
+            for key in [()] if cover else keys:
+                image = key or None
+                shader = shader_lib.get("edge_corner", {**defines, **texture_defines(image)})
+                shader.bind()
+                shader.uniform_block("frame", ubo)
+                if "EL_SHADOWS" in defines:
+                    shader_lib.set_sampler(shader, "shadow_maps", shadow_maps)
+                pass_state.bind_inputs(shader, pass_name, targets)
+
+                def slots(gm, key=key, cover=cover):
+                    return {k: b for k, b in gm.corners.items() if cover or key_of(gm, k) == key}
+                _draw_per_slot(shader, scene, gpu_meshes, slots, textured=image is not None)
 
 
-def _draw_per_slot(shader, scene, gpu_meshes, batches_of):
+def _draw_per_slot(shader, scene, gpu_meshes, batches_of, textured=False):
     """Draws each instance's batches (batches_of(gpu mesh): slot -> batch) with its model
-    matrix, its id and each slot's shading; returns the (gpu mesh, slot) pairs drawn."""
+    matrix, its id and each slot's shading (`textured`: its image's, textured_uniforms);
+    returns the (gpu mesh, slot) pairs drawn."""
     drawn = []
     for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
@@ -66,7 +98,10 @@ def _draw_per_slot(shader, scene, gpu_meshes, batches_of):
         shader_lib.set_uniform(shader, "instance_id", float(index + 1))
         for slot, batch in batches.items():
             s = gm.extract.slot_shading[slot]
-            shading_uniforms(shader, s)
+            if textured:
+                textured_uniforms(shader, s)
+            else:
+                shading_uniforms(shader, s)
             shader_lib.set_uniform(shader, "tint", (*s.tint, s.K))
             batch.draw(shader)
             drawn.append((gm, slot))

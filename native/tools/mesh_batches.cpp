@@ -126,6 +126,7 @@ EdgeQuads edge_quads(const EdgeSet& edges, float radius, Provoking provoking) {
     q.ends.assign(16 * n, float(std::numbers::pi / 2.0));
     q.turn1.assign(12 * n, 0.0f);
     q.turn2.assign(12 * n, 0.0f);
+    q.uv.assign(16 * n, 0.0f);
     for (size_t i = 0; i < n; ++i) {
         for (uint32_t c = 0; c < 4; ++c) {
             const size_t s = slot(i, c);

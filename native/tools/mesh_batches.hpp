@@ -37,6 +37,7 @@ struct EdgeQuads {
     // 3 per vertex each: how N1 and N2 turn along the edge (the add-on's edge_data.mean_and_turn),
     // zero here: this renderer's normals are the faces' own, constant along each edge.
     std::vector<float> turn1, turn2;
+    std::vector<float> uv;              // 4 per vertex: an image's UV at p0 and p1, zero: no image here
     std::vector<uint32_t> indices;      // 6 per edge
 };
 

@@ -99,7 +99,7 @@ public:
           edge_vao(edge,
                    {{"p0", &quads.p0, 3}, {"p1", &quads.p1, 3}, {"n1", &quads.n1, 3}, {"n2", &quads.n2, 3},
                     {"corner", &quads.corner, 4}, {"faces", &quads.faces, 2}, {"ends", &quads.ends, 4},
-                    {"turn1", &quads.turn1, 3}, {"turn2", &quads.turn2, 3}},
+                    {"turn1", &quads.turn1, 3}, {"turn2", &quads.turn2, 3}, {"uv", &quads.uv, 4}},
                    &quads.indices) {}
 
     const Scene& scene;

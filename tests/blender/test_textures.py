@@ -117,6 +117,42 @@ class TexelsAtTheirPlaces(unittest.TestCase):
             np.testing.assert_allclose(quadrant(px, qx, qy), expected((0.0,) * 3, want[qy, qx]), atol=2e-3)
 
 
+class RoundedEdgesUnderTheImage(unittest.TestCase):
+    def test_bands_and_corners_take_the_texel_not_the_images_mean(self):
+        """A cube whose every corner maps into the red half of a half-red, half-blue image: its
+        bands and corner patches are red, as a bevel under that image would be; the image's mean
+        (purple) would give them as much blue as red."""
+        helpers.needs_gpu()
+        scene = helpers.empty_scene(160, 160, highlights=True)
+        helpers.set_world_color(scene, (0.3, 0.3, 0.3))
+        helpers.add_camera((4.0, -5.0, 3.5))
+        helpers.add_sun((0.4, -1.0, 0.8), 3.0)
+        bpy.ops.mesh.primitive_cube_add(size=2.0)
+        ob = bpy.context.object
+        layer = ob.data.uv_layers.active
+        layer.data.foreach_set("uv", np.tile([0.25, 0.5], len(layer.data)).astype(np.float32))
+        img = bpy.data.images.new("Halves", 4, 2)
+        px = np.zeros((2, 4, 4), np.float32)
+        px[:, :2] = (1.0, 0.0, 0.0, 1.0)
+        px[:, 2:] = (0.0, 0.0, 1.0, 1.0)
+        img.pixels.foreach_set(px.reshape(-1))
+        mat = zoo.material("Halves", (0.8, 0.8, 0.8))
+        mat.use_nodes = True
+        bsdf = next(n for n in mat.node_tree.nodes if n.type == 'BSDF_PRINCIPLED')
+        tex = mat.node_tree.nodes.new('ShaderNodeTexImage')
+        tex.image, tex.interpolation = img, 'Closest'
+        mat.node_tree.links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+        mat.edgelight.radius = 0.08
+        ob.data.materials.append(mat)
+        rec = helpers.render()
+        hl = np.asarray(rec["highlight"])
+        band = hl[..., 3] > 0.2
+        red, blue = hl[band][:, 0].sum(), hl[band][:, 2].sum()
+        print(f"{int(band.sum())} band pixels: red {red:.2f}, blue {blue:.2f}")
+        self.assertGreater(band.sum(), 100)
+        self.assertGreater(red, 20.0 * blue)
+
+
 class SaidWhenNotDrawn(unittest.TestCase):
     def setUp(self):
         helpers.needs_gpu()
