@@ -5,10 +5,11 @@ a framebuffer on one layer of an array texture cannot be made from Python on 4.x
 dictionary is misread there). Drawn once per frame from each light's centre: the samples share
 it, and a light's size softens the shadow in the lookup (docs/shadows.md)."""
 import gpu
+import numpy as np
 
 from .. import compat
 from . import frame_data, shader_lib
-from .shadow_plan import atlas_grid, layer_casters
+from .shadow_plan import atlas_grid, layer_casters, merged_casters
 
 # What a tile holds where nothing is drawn: farther than anything.
 EMPTY = 3.0e38
@@ -32,6 +33,16 @@ class ShadowMaps:
         return per_row
 
 
+def _merged_batch(corners):
+    if not len(corners):
+        return None
+    fmt = gpu.types.GPUVertFormat()
+    fmt.attr_add(id="pos", comp_type='F32', len=3, fetch_mode='FLOAT')
+    vbo = gpu.types.GPUVertBuf(fmt, len(corners))
+    vbo.attr_fill("pos", np.ascontiguousarray(corners))
+    return gpu.types.GPUBatch(type='TRIS', buf=vbo)
+
+
 def draw(plan, scene, gpu_meshes, maps):
     """Draws every layer of `plan` (ShadowPlan) with the surfaces of scene.instances that cast
     shadows; returns the atlas, or None when the plan has no layer."""
@@ -39,8 +50,12 @@ def draw(plan, scene, gpu_meshes, maps):
         return None
     per_row = maps.fit(plan.size, plan.layers)
     shader = shader_lib.get("shadow")
+    merged, corners = merged_casters(scene)
+    merged_batch = _merged_batch(corners)
+    merged = set(merged)
     casters = layer_casters(plan, scene.instances)
     size = plan.size
+    identity = frame_data.mat4(np.eye(4))
     with maps.fb.bind():
         maps.fb.clear(color=(EMPTY, EMPTY, EMPTY, EMPTY), depth=1.0)
         gpu.state.depth_test_set('LESS_EQUAL')
@@ -51,7 +66,12 @@ def draw(plan, scene, gpu_meshes, maps):
         for layer, matrix in enumerate(plan.matrices):
             gpu.state.viewport_set((layer % per_row) * size, (layer // per_row) * size, size, size)
             shader_lib.set_uniform(shader, "light_matrix", frame_data.mat4(matrix))
+            if merged_batch is not None and merged.intersection(casters[layer]):
+                shader_lib.set_uniform(shader, "model", identity)
+                merged_batch.draw(shader)
             for index in casters[layer]:
+                if index in merged:
+                    continue
                 inst = scene.instances[index]
                 shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
                 for batch in gpu_meshes[id(inst.mesh)].surface.values():

@@ -263,3 +263,25 @@ def layer_casters(plan_, instances):
         seen = ~np.any(np.all(outside, axis=1), axis=-1) & casts
         out.append(sorted(unbounded + [picked[k] for k in np.nonzero(seen)[0]]))
     return out
+
+
+# A caster of at most this many triangles joins the frame's merged caster batch (world space,
+# one draw per layer for all of them) instead of a draw of its own: a scene of many small parts
+# costs one draw, not one per part. The batch holds at most MERGED_MAX triangles.
+MERGE_TRIANGLES = 4096
+MERGED_MAX = 1 << 20
+
+
+def merged_casters(scene):
+    """(indices of the casters in the merged batch, (3T, 3) float32 world corners) of the small
+    casters, until MERGED_MAX triangles."""
+    picked, parts, total = [], [], 0
+    for i, inst in enumerate(scene.instances):
+        count = len(inst.mesh.corner_pos) // 3
+        if not getattr(inst, "casts_shadow", True) or count > MERGE_TRIANGLES or total + count > MERGED_MAX:
+            continue
+        m = np.asarray(inst.matrix, np.float64)
+        parts.append((np.asarray(inst.mesh.corner_pos, np.float64) @ m[:3, :3].T + m[:3, 3]).astype(np.float32))
+        picked.append(i)
+        total += count
+    return picked, (np.concatenate(parts) if parts else np.zeros((0, 3), np.float32))

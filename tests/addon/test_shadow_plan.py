@@ -18,6 +18,7 @@ camera_mod = addon_module("passes.camera")
 @dataclass
 class Mesh:
     box: np.ndarray
+    corner_pos: np.ndarray = field(default_factory=lambda: np.zeros((36, 3), np.float32))
 
 
 @dataclass
@@ -156,6 +157,22 @@ class SpotAndCulling(unittest.TestCase):
     def test_nothing_to_draw(self):
         scene = Scene([box_at((0.0, 0.0, 0.0))], [Light(LIGHT["POINT"], shadow=False)])
         self.assertEqual(plan_mod.plan(scene, camera(), SETTINGS).layers, 0)
+
+
+class MergedCasters(unittest.TestCase):
+    def test_small_casters_in_world_space_large_and_hidden_ones_on_their_own(self):
+        rng = np.random.default_rng(3)
+        small = box_at((1.0, 2.0, 3.0))
+        small.mesh.corner_pos = rng.normal(size=(36, 3)).astype(np.float32)
+        small.matrix[:3, :3] = [[0.0, -2.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.5]]
+        large = box_at((0.0, 0.0, 0.0))
+        large.mesh.corner_pos = np.zeros((3 * (plan_mod.MERGE_TRIANGLES + 1), 3), np.float32)
+        hidden = box_at((5.0, 0.0, 0.0))
+        hidden.casts_shadow = False
+        picked, corners = plan_mod.merged_casters(Scene([large, small, hidden], []))
+        self.assertEqual(picked, [1])
+        want = small.mesh.corner_pos.astype(np.float64) @ small.matrix[:3, :3].T + small.matrix[:3, 3]
+        np.testing.assert_allclose(corners, want, rtol=1e-6, atol=1e-6)
 
 
 if __name__ == "__main__":

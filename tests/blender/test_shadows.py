@@ -16,7 +16,7 @@ FLOOR, SIZE, PX = 8.0, 200, 200 / 8.0   # the floor's width, the image's, pixels
 LIGHT_AT = (1.0, 0.5, 5.0)
 
 
-def floor_scene(kind, radius=0.0, samples=1, spot_deg=90.0, at=LIGHT_AT, **settings):
+def floor_scene(kind, radius=0.0, samples=1, spot_deg=90.0, at=LIGHT_AT, dense=False, **settings):
     """An 8 x 8 floor at z = 0 under a box of side 1 floating at z 1..2, seen straight down by an
     orthographic camera that frames the floor; one light of `kind` (a local one at `at`, facing
     down), hard unless `radius`; no world light, so a shadow is black."""
@@ -25,6 +25,9 @@ def floor_scene(kind, radius=0.0, samples=1, spot_deg=90.0, at=LIGHT_AT, **setti
     bpy.ops.mesh.primitive_plane_add(size=FLOOR)
     bpy.ops.mesh.primitive_cube_add(size=1.0, location=(0.0, 0.0, 1.5))
     box = bpy.context.object
+    if dense:  # 6144 triangles, past shadow_plan.MERGE_TRIANGLES: drawn on its own, not merged
+        mod = box.modifiers.new("Dense", 'SUBSURF')
+        mod.subdivision_type, mod.levels, mod.render_levels = 'SIMPLE', 4, 4
     cam = helpers.add_camera((0.0, 0.0, 20.0), (0.0, 0.0, 0.0))
     cam.data.type, cam.data.ortho_scale = 'ORTHO', FLOOR
     data = bpy.data.lights.new("Light", kind)
@@ -139,6 +142,8 @@ class WhereTheShadowFalls(unittest.TestCase):
         self.check_against_rays('POINT')
         # Low and to the side: the shadow falls in the cube's +Y face, the floor near the light in -Z.
         self.check_against_rays('POINT', at=(0.3, -2.5, 2.6))
+        # A caster too large for the merged batch: its own draws, with its own matrix.
+        self.check_against_rays('POINT', at=(0.3, -2.5, 2.6), dense=True)
 
     def test_a_spot_light_shadow_in_one_map_and_in_a_cube(self):
         self.check_against_rays('SPOT', spot_deg=90.0)     # one perspective layer
