@@ -20,7 +20,7 @@ class ShadowMaps:
     made again when a frame needs another."""
 
     def __init__(self):
-        self.shape, self.maps, self.fb = None, None, None
+        self.shape, self.maps, self.depth, self.fb = None, None, None, None
 
     def fit(self, size, layers):
         per_row, rows = atlas_grid(layers, size)
@@ -28,8 +28,10 @@ class ShadowMaps:
         if shape != self.shape:
             self.shape = shape
             self.maps = compat.texture(shape, 'R32F')
-            self.fb = gpu.types.GPUFrameBuffer(depth_slot=compat.texture(shape, 'DEPTH_COMPONENT32F'),
-                                               color_slots=(self.maps,))
+            # Held here: a framebuffer does not keep its attachments alive, and a freed depth
+            # texture leaves it without a depth test (the last caster drawn would win).
+            self.depth = compat.texture(shape, 'DEPTH_COMPONENT32F')
+            self.fb = gpu.types.GPUFrameBuffer(depth_slot=self.depth, color_slots=(self.maps,))
         return per_row
 
 
@@ -57,9 +59,9 @@ def draw(plan, scene, gpu_meshes, maps):
     size = plan.size
     identity = frame_data.mat4(np.eye(4))
     with maps.fb.bind():
-        maps.fb.clear(color=(EMPTY, EMPTY, EMPTY, EMPTY), depth=1.0)
         gpu.state.depth_test_set('LESS_EQUAL')
-        gpu.state.depth_mask_set(True)
+        gpu.state.depth_mask_set(True)  # before the clear: a depth clear honours the write mask
+        maps.fb.clear(color=(EMPTY, EMPTY, EMPTY, EMPTY), depth=1.0)
         gpu.state.blend_set('NONE')
         gpu.state.face_culling_set('NONE')  # both sides cast: thin walls, open meshes
         shader.bind()

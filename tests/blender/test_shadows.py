@@ -22,9 +22,10 @@ def floor_scene(kind, radius=0.0, samples=1, spot_deg=90.0, at=LIGHT_AT, dense=F
     down), hard unless `radius`; no world light, so a shadow is black."""
     scene = helpers.empty_scene(SIZE, SIZE, highlights=False, samples=samples, **settings)
     helpers.set_world_color(scene, (0.0, 0.0, 0.0))
-    bpy.ops.mesh.primitive_plane_add(size=FLOOR)
+    # The box first: the floor, drawn into the maps after it, must not cover it (the maps' depth test).
     bpy.ops.mesh.primitive_cube_add(size=1.0, location=(0.0, 0.0, 1.5))
     box = bpy.context.object
+    bpy.ops.mesh.primitive_plane_add(size=FLOOR)
     if dense:  # 6144 triangles, past shadow_plan.MERGE_TRIANGLES: drawn on its own, not merged
         mod = box.modifiers.new("Dense", 'SUBSURF')
         mod.subdivision_type, mod.levels, mod.render_levels = 'SIMPLE', 4, 4

@@ -500,6 +500,41 @@ def steps():
     mat.edgelight.shading = 'PHONG'
     yield 0.2
 
+    # 9b. Cast shadows in the viewport (docs/shadows.md): a floor under the cubes and a sun; with
+    # Shadows on, the floor darkens where their shadow falls, and nothing gets brighter. (The
+    # sample file is older than shadows, so it opened with them off: versioning, layout 6.)
+    scene = bpy.context.scene
+    bpy.ops.mesh.primitive_plane_add(size=40.0, location=(0.0, 0.0, -1.5))
+    floor = bpy.context.object
+    sun = bpy.data.objects.new("ShadowSun", bpy.data.lights.new("ShadowSun", 'SUN'))
+    sun.data.energy, sun.rotation_euler = 1.5, (-0.5, 0.4, 0.0)  # the shadow falls towards the view
+    scene.collection.objects.link(sun)
+    # The file's own lights off meanwhile: under them the floor is white past the display's range.
+    others = [ob for ob in scene.objects if ob.type == 'LIGHT' and ob is not sun and not ob.hide_viewport]
+    for ob in others:
+        ob.hide_viewport = True
+    check("shadows: an older file opens with Shadows off", not scene.edgelight.use_shadows)
+    yield 0.5
+    redraw()
+    yield 0.5
+    off, _ = screenshot("shadows_off")
+    scene.edgelight.use_shadows = True
+    yield 0.5
+    redraw()
+    yield 0.5
+    on, path = screenshot("shadows_on")
+    weights = np.array([0.2126, 0.7152, 0.0722])
+    change = off[..., :3] @ weights - on[..., :3] @ weights
+    check("shadows: the viewport draws the cubes' shadow on the floor",
+          (change > 0.05).sum() > 500 and (change < -0.02).sum() < 20,
+          f"{path}: {(change > 0.05).sum()} pixels darker, {(change < -0.02).sum()} brighter")
+    scene.edgelight.use_shadows = False
+    bpy.data.objects.remove(floor)
+    bpy.data.objects.remove(sun)
+    for ob in others:
+        ob.hide_viewport = False
+    yield 0.5
+
     # 10. A final render started from the UI as an artist would (a render job with its own GPU
     # context, not -b).
     import edgelight
