@@ -198,7 +198,10 @@ class CornerPatches(unittest.TestCase):
             radius = zoo.radius_at_width(width, camera, RESOLUTION[0])
             renders = {}
             for name, kw in (("truth", dict(segments=32)), ("ours", {}), ("off", dict(highlights=False))):
-                helpers.empty_scene(*RESOLUTION, samples=16 if kw.get("segments") else 4)
+                # Shadows off: the notch's walls shadow its corner, and true fillets change those
+                # shadows as maps drawn from the sharp mesh cannot (docs/shadows.md); the convex
+                # corners above keep theirs.
+                helpers.empty_scene(*RESOLUTION, samples=16 if kw.get("segments") else 4, use_shadows=False)
                 helpers.add_camera(camera)
                 helpers.add_sun((0.3, 0.5, 0.8), 4.0)
                 cube = bmesh.new()

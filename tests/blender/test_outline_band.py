@@ -26,7 +26,8 @@ def box_before_backdrop(width_px, backdrop_rgb, mode):
     (its own colour `backdrop_rgb`), lit by a sun from the front right: mode 'edgelight'
     (highlights on), 'outline' (on, with bands too faint to draw: the rounded outline alone),
     'sharp' (off) or 'fillets' (exactly circular fillets, highlights off, 64 samples)."""
-    helpers.empty_scene(*RESOLUTION, samples=64 if mode == "fillets" else 8)
+    # Shadows off: the box's shadow on the backdrop is not what these measure (docs/shadows.md).
+    helpers.empty_scene(*RESOLUTION, samples=64 if mode == "fillets" else 8, use_shadows=False)
     helpers.add_camera(tuple(CAMERA))
     helpers.add_sun((0.5, -0.8, 0.6), 4.0)
     cube = zoo.box("Box")
