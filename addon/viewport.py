@@ -111,8 +111,10 @@ class ViewportState:
                     self.owners[cache_key] = scene_sync.instance_owners(inst)
                 elif shading and cache is not None and cache_key not in reshaded:
                     reshaded.add(cache_key)
-                    self._reshade(cache, materials)
-                    self.notes[cache_key] = cache.extract.notes()
+                    if self._reshade(cache, materials):
+                        self.notes[cache_key] = cache.extract.notes()
+                    else:  # its images read other UV maps: the corners' UVs are read again
+                        self.objects[cache_key], self.notes[cache_key] = self._extract(ob, inst, materials, lib)
             cache = self.objects[cache_key]
             if cache is None:
                 return None
@@ -168,9 +170,13 @@ class ViewportState:
         """Material settings changed: new uniforms; new edge batches only where the chosen edges
         changed. No native call: the classification is kept in the extract. The extract is
         replaced by a copy with the new shading and edges, never changed in place: what still
-        holds the old one (the last instances, a render's scene) keeps a consistent one."""
+        holds the old one (the last instances, a render's scene) keeps a consistent one.
+        Returns False, changing nothing, when a slot's image now reads another UV map (or a
+        slot gained or lost one): the object is then extracted again."""
         ex = cache.extract
         shading = [shading_of(m) for m in materials] or [shading_of(None)]
+        if slot_uv_maps(shading) != slot_uv_maps(ex.slot_shading):
+            return False  # the batches hold each slot's UVs for its image (batches.slot_uv)
         edges = edge_choice.choose_edges(ex.edge_data, shading)
         same = edge_choice.same_edges(edges, ex.edges)
         cache.materials = list(materials)
@@ -178,6 +184,7 @@ class ViewportState:
         if cache.gpu is not None:
             cache.gpu.extract = cache.extract  # its batches draw the new extract's shading
         cache.edges_stale = cache.edges_stale or not same
+        return True
 
     # ---- view_draw ---------------------------------------------------------------------
     def draw(self, engine, context, depsgraph):
@@ -310,6 +317,11 @@ class ViewportState:
         c = self.counters
         return (f"{c.objects} objects | edges {c.edges_drawn} drawn, {c.edges_culled} culled | lines {c.lines_drawn}"
                 f" | cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}")
+
+
+def slot_uv_maps(shading):
+    """Per slot, the UV map its image reads (None without one): what its surface batch's UVs are."""
+    return tuple(s.texture.source.uv_map if s.texture is not None else None for s in shading)
 
 
 def scene_signature(state, scene):

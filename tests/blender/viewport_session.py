@@ -535,6 +535,30 @@ def steps():
         ob.hide_viewport = False
     yield 0.5
 
+    # 9c. An image into a material's Base Color in the viewport: the material's objects are
+    # read again (their corners' UVs for the image), and the image shows.
+    mat = bpy.data.materials["Cube"]
+    tree = mat.node_tree
+    bsdf = tree.nodes["Principled BSDF"]
+    before_img, _ = screenshot("before_image")
+    c16 = counters()
+    red = bpy.data.images.new("RedImage", 8, 8)
+    red.generated_color = (1.0, 0.0, 0.0, 1.0)
+    tex = tree.nodes.new('ShaderNodeTexImage')
+    tex.image = red
+    tree.links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+    yield 0.5
+    redraw()
+    yield 0.5
+    c17 = counters()
+    after_img, path = screenshot("image")
+    reddish = lambda img: int(((img[..., 0] > 0.15) & (img[..., 0] > 3.0 * img[..., 2])).sum())  # noqa: E731
+    check("image in Base Color: the object is read again, and the image shows",
+          c17["extracts"] > c16["extracts"] and reddish(after_img) > reddish(before_img) + 2000,
+          f"{path}: extracts {c16['extracts']} -> {c17['extracts']}, red pixels {reddish(before_img)} -> {reddish(after_img)}")
+    tree.nodes.remove(tex)
+    yield 0.5
+
     # 10. A final render started from the UI as an artist would (a render job with its own GPU
     # context, not -b).
     import edgelight
