@@ -56,10 +56,10 @@ class Shading:
 @dataclass(frozen=True)
 class BaseTexture:
     """An Image Texture in a material's Base Color (material_inputs.image_input), as the surface
-    pass draws it (surface.frag.glsl, EL_BASE_TEXTURE): albedo = texel x (1 - metallic), F0 =
-    `f0` + texel x metallic. The Shading's own base and specular colours take the image's mean
-    colour, for what draws the material without the texture (the edge bands, corner patches and
-    the toon ramp's default stops)."""
+    pass, the bands and the corner patches draw it (EL_BASE_TEXTURE): albedo = texel x
+    (1 - metallic), F0 = `f0` + texel x metallic. The Shading's own base and specular colours take
+    the image's mean colour, for what draws the material without the image (toon shading, its
+    default ramp stops)."""
     source: object         # material_inputs.ImageInput
     metallic: float
     f0: tuple              # the dielectric part of F0: 0.08 specular (1 - metallic)
@@ -147,6 +147,10 @@ def shading_of(material):
     s = material.edgelight
     n = s.shininess if s.use_custom_shininess else shininess_from_roughness(roughness)
     toon, note = usable_toon(material.name, toon_of(s, base))
+    if image is not None and toon.mode != PHONG.mode:
+        # Toon shading draws no image (surface_pass.texture_key): said, as what is not drawn is.
+        note = "; ".join(n for n in (note, f"material '{material.name}': its image '{image.image.name}' in Base Color "
+                                           "is drawn as its mean colour under toon shading") if n)
     note = "; ".join(n for n in (material_inputs.note(material, unread(material)), note) if n)
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.

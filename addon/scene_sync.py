@@ -40,6 +40,7 @@ class MeshExtract:
     closed: bool = False                        # closed and consistently oriented: back faces hide (closed_surfaces)
     box: np.ndarray = None                      # (2, 3) object-space bounds of its surface
     corner_uv: dict = field(default_factory=dict)  # UV map name ("": active render) -> (3T, 2), for textured slots
+    missing_uv: frozenset = frozenset()         # UV map names a slot's image asked for that the mesh lacks
     # What is computed from the chosen edges (rounded_outline.from_edges: the fillets' outline
     # records), by name: (the edges it was computed from, the value). One dict shared by the
     # copies a render cache makes, so a reused extraction whose edges were not chosen again does
@@ -247,12 +248,13 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
         flat = np.repeat(polygon_unit_normals(mesh, positions)[tri_poly], 3, axis=0)
         corner_nor = np.where(np.isfinite(corner_nor).all(axis=1, keepdims=True), corner_nor, flat)
     shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
-    shading, corner_uv = textured_corners(name, mesh, shading, tri_loops)
+    shading, corner_uv, missing_uv = textured_corners(name, mesh, shading, tri_loops)
     key = content = None
     if cache is not None or same_content is not None:
         digest = render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot, marks, bevel,
                                            tri_poly, polygons.start, polygons.total, polygons.loop_vert,
-                                           polygons.loop_edge, corner_nor, *(corner_uv[k] for k in sorted(corner_uv))))
+                                           polygons.loop_edge, corner_nor, *(corner_uv[k] for k in sorted(corner_uv)),
+                                           np.frombuffer(repr(sorted(corner_uv)).encode(), np.uint8)))
         # Shading follows from the materials alone within a render: their names decide.
         content = (id(lib), digest, tuple(s.material for s in shading))
         if same_content is not None and content in same_content:
@@ -280,7 +282,7 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     order = np.argsort(tri_slot, kind="stable")
     slot_triangles = {int(s): order[tri_slot[order] == s] for s in np.unique(tri_slot)}
     out = MeshExtract(name, positions[tri_verts.reshape(-1)], np.ascontiguousarray(corner_nor, np.float32),
-                      slot_triangles, shading, info=info, corner_uv=corner_uv)
+                      slot_triangles, shading, info=info, corner_uv=corner_uv, missing_uv=frozenset(missing_uv))
     # The classification, kept so a material change can re-choose edges without a native call.
     # The id the surface pass writes for each triangle (passes/frame.py): its batch's first id
     # plus its place in the batch, since the slots' batches are drawn in this order.
@@ -341,10 +343,10 @@ def render_uv_layer(mesh):
 
 
 def textured_corners(name, mesh, shading, tri_loops):
-    """(shading, {UV map name: (3T, 2) corner UVs}) for the slots that draw an image
-    (materials.BaseTexture). A slot whose UV map the mesh lacks draws without its image, and its
-    note says so."""
-    corner_uv, out = {}, []
+    """(shading, {UV map name: (3T, 2) corner UVs}, {the UV map names the mesh lacks}) for the
+    slots that draw an image (materials.BaseTexture). A slot whose UV map the mesh lacks draws
+    without its image, and its note says so."""
+    corner_uv, out, missing = {}, [], set()
     for s in shading:
         if s.texture is not None:
             uv_name = s.texture.source.uv_map
@@ -353,12 +355,13 @@ def textured_corners(name, mesh, shading, tri_loops):
                 if layer is not None:
                     corner_uv[uv_name] = _foreach(layer.data, "uv", np.float32, 2)[tri_loops.reshape(-1)]
             if uv_name not in corner_uv:
+                missing.add(uv_name)
                 which = f"UV map '{uv_name}'" if uv_name else "UV map"
                 note = (f"{name}: material '{s.material}' maps image '{s.texture.source.image.name}' by a {which} the "
                         f"mesh does not have; its Base Color is drawn as the image's mean colour")
                 s = dataclasses.replace(s, texture=None, note="; ".join(n for n in (s.note, note) if n))
         out.append(s)
-    return out, corner_uv
+    return out, corner_uv, missing
 
 
 def light_of(ob, matrix):
@@ -376,7 +379,9 @@ def light_of(ob, matrix):
         light.spot_cos = math.cos(data.spot_size / 2.0)
         light.spot_blend = float(data.spot_blend)
     light.shadow = bool(getattr(data, "use_shadow", False))
-    light.radius = light_radius(data)
+    # An area light's size scales with its object, as Blender draws it; a point light's Radius does not.
+    scale = float(np.mean(np.linalg.norm(m[:3, :2], axis=0))) if data.type == 'AREA' else 1.0
+    light.radius = light_radius(data) * scale
     return light
 
 

@@ -175,7 +175,7 @@ class ViewportState:
         slot gained or lost one): the object is then extracted again."""
         ex = cache.extract
         shading = [shading_of(m) for m in materials] or [shading_of(None)]
-        if slot_uv_maps(shading) != slot_uv_maps(ex.slot_shading):
+        if slot_uv_maps(shading, ex.missing_uv) != slot_uv_maps(ex.slot_shading):
             return False  # the batches hold each slot's UVs for its image (batches.slot_uv)
         edges = edge_choice.choose_edges(ex.edge_data, shading)
         same = edge_choice.same_edges(edges, ex.edges)
@@ -319,9 +319,11 @@ class ViewportState:
                 f" | cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}")
 
 
-def slot_uv_maps(shading):
-    """Per slot, the UV map its image reads (None without one): what its surface batch's UVs are."""
-    return tuple(s.texture.source.uv_map if s.texture is not None else None for s in shading)
+def slot_uv_maps(shading, missing=frozenset()):
+    """Per slot, the UV map its image reads (None without one, or where it is among `missing`,
+    the maps the mesh lacked): what its surface batch's UVs are."""
+    return tuple(s.texture.source.uv_map if s.texture is not None and s.texture.source.uv_map not in missing else None
+                 for s in shading)
 
 
 def scene_signature(state, scene):

@@ -101,7 +101,17 @@ float el_light_shadow(int i, vec3 X, vec3 N)
   float texel = 2.0 * w / (size * max(length(vec3(m[0][0], m[1][0], m[2][0])), 1e-30));
   /* Normal offset: the lookup moves off the surface by two texels, so that a surface does not
    * shadow itself where the map samples it coarsely (acne), with a texel's slack on the depth. */
-  vec4 clip = m * vec4(X + N * (2.0 * texel + el_shadow_lift), 1.0);
+  vec3 Xo = X + N * (2.0 * texel + el_shadow_lift);
+  /* The layer of the point looked up: the offset may cross a cube face's or a cascade's border. */
+  int moved = el_shadow_layer(i, Xo, s);
+  if (moved < 0) {
+    return 1.0;
+  }
+  if (moved != layer) {
+    layer = moved;
+    m = frame.shadow_matrix[layer];
+  }
+  vec4 clip = m * vec4(Xo, 1.0);
   vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || clip.w <= 0.0) {
     return 1.0; /* outside what the layer sees: nothing there casts */

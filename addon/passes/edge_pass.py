@@ -64,7 +64,8 @@ def draw_corners(targets, scene, gpu_meshes, ubo, shadow_maps=None):
         return
 
     def key_of(gm, k):
-        return texture_key(gm.extract.slot_shading[k], SURFACE_MODES["PHONG"]) or ()
+        s = gm.extract.slot_shading[k]
+        return texture_key(s, _mode(s)) or ()  # a toon slot's corners take the mean, as its bands
 
     keys = sorted({key_of(gm, k) for gm in (gpu_meshes[id(inst.mesh)] for inst in scene.instances) for k in gm.corners})
     for pass_name, defines in (("edge_corner_cover", {"EL_CORNER_COVER": 1}), ("edge_corner", shadow_defines(shadow_maps))):

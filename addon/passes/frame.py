@@ -64,11 +64,16 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
     # samples far faster than llvmpipe draws them, and a cancel would land after all of them.
     between = CancelCheck(targets.result, cancelled) if cancelled else None
     culls = surface_pass.cull_modes(scene, camera)
-    shadows = shadow_plan.plan(scene, camera, settings.shadows) if settings.shadows else None
-    shadow_maps = shadow_pass.draw(shadows, scene, gpu_meshes, targets.shadow_maps) if shadows else None
+    unlit = settings.lines is not None and settings.lines.whiteout  # nothing reads a shadow
+    shadows = shadow_plan.plan(scene, camera, settings.shadows) if settings.shadows and not unlit else None
+    shadow_maps = None
+    if shadows:
+        shadow_maps = shadow_pass.draw(shadows, scene, gpu_meshes, targets.shadow_maps)
+    else:
+        targets.shadow_maps.release()  # Shadows off: the viewport's atlas goes
     if shadows and shadows.left_out and scene.reports is not None:
         scene.reports.append(f"{shadows.left_out} light{'s' if shadows.left_out != 1 else ''} cast no shadow: "
-                             f"the lights before took all {shadow_plan.MAX_LAYERS} shadow layers")
+                             f"the lights before took all {settings.shadows.max_layers} shadow layers")
     for s in range(samples):
         if cancelled and (cancelled() if s == 0 else between()):
             break

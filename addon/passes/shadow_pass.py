@@ -22,6 +22,10 @@ class ShadowMaps:
     def __init__(self):
         self.shape, self.maps, self.depth, self.fb = None, None, None, None
 
+    def release(self):
+        """Lets the atlas go (a frame with no shadow: Shadows turned off in the viewport)."""
+        self.shape, self.maps, self.depth, self.fb = None, None, None, None
+
     def fit(self, size, layers):
         per_row, rows = atlas_grid(layers, size)
         shape = (per_row * size, rows * size)
@@ -49,6 +53,7 @@ def draw(plan, scene, gpu_meshes, maps):
     """Draws every layer of `plan` (ShadowPlan) with the surfaces of scene.instances that cast
     shadows; returns the atlas, or None when the plan has no layer."""
     if not plan.layers:
+        maps.release()
         return None
     per_row = maps.fit(plan.size, plan.layers)
     shader = shader_lib.get("shadow")

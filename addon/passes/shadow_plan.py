@@ -139,6 +139,8 @@ def camera_range(camera, scene_box):
         near, far = p[2, 3] / (p[2, 2] - 1.0), p[2, 3] / (p[2, 2] + 1.0)
     depths = (box_corners(scene_box) - np.asarray(camera.eye)) @ np.asarray(camera.view_dir)
     lo, hi = max(near, float(depths.min())), min(far, float(depths.max()))
+    if camera.orthographic:
+        return (lo, hi) if hi > lo else None
     return (lo, hi) if hi > lo and hi > 0.0 else None
 
 
@@ -172,9 +174,14 @@ def sun_cascades(light, camera, scene_box, size):
     if span is None:
         return None
     near, far = span
-    near = max(near, far * 1e-4)
-    count = int(min(MAX_CASCADES, max(1, math.ceil(math.log2(far / near) / 2.0))))
-    splits = cascade_splits(near, far, count)
+    if camera.orthographic:
+        # Depth does not shrink the view: one cascade over the whole range, which may start
+        # behind the eye (an orthographic viewport's clip range is centred on its pivot).
+        splits = (far,)
+    else:
+        near = max(near, far * 1e-4)
+        count = int(min(MAX_CASCADES, max(1, math.ceil(math.log2(far / near) / 2.0))))
+        splits = cascade_splits(near, far, count)
     view = look((0.0, 0.0, 0.0), light.direction, (0.0, 0.0, 1.0))
     scene_pts = box_corners(scene_box) @ view[:3, :3].T
     z_near, z_far = -scene_pts[:, 2].max(), -scene_pts[:, 2].min()

@@ -116,6 +116,23 @@ class SunCascades(unittest.TestCase):
             z = (m @ np.c_[corners, np.ones(8)].T)[2]
             self.assertTrue(np.all(np.abs(z) <= 1.0))
 
+    def test_an_orthographic_view_takes_one_cascade_over_its_whole_depth(self):
+        """An orthographic viewport's clip range is centred on its pivot: what it sees may lie
+        behind the eye, and one cascade holds all of it."""
+        floor = Instance(Mesh(np.array([[-20.0, -20.0, -0.01], [20.0, 20.0, 0.0]])), np.eye(4))
+        view = plan_mod.look((0.0, -3.0, 1.0), (0.0, 1.0, -0.2), (0.0, 0.0, 1.0))
+        proj = plan_mod.orthographic(-4.0, 4.0, -3.0, 3.0, -50.0, 50.0)
+        cam = camera_mod.from_view(view, proj, True, 320, 240)
+        p = plan_mod.plan(Scene([floor], [Light(LIGHT["SUN"], direction=(-0.3, 0.2, -1.0))]), cam, SETTINGS)
+        ls = p.lights[0]
+        self.assertEqual(ls.count, 1)
+        near, far = plan_mod.camera_range(cam, floor.mesh.box)
+        self.assertLess(near, 0.0)
+        m = np.asarray(p.matrices[ls.first])
+        for corner in plan_mod.slice_corners(cam, near, far):
+            clip = m @ np.r_[corner, 1.0]
+            self.assertTrue(np.all(np.abs(clip[:2]) <= 1.0), corner)
+
     def test_the_practical_split(self):
         s = plan_mod.cascade_splits(1.0, 16.0, 2, blend=1.0)
         np.testing.assert_allclose(s, (4.0, 16.0))           # logarithmic: equal ratios

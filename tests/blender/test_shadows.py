@@ -156,6 +156,9 @@ class WhereTheShadowFalls(unittest.TestCase):
     def test_the_settings_that_turn_a_shadow_off(self):
         """The light's Shadow, the object's Ray Visibility > Shadow and the scene's Shadows each
         leave the floor lit where the shadow fell."""
+        scene, light, box = floor_scene('POINT')
+        lum = helpers.render()["pixels"][..., :3].mean(axis=-1)
+        self.assertLess(lum[~box_pixels(box)].min(), 1e-4, "with all of them on, the shadow is there")
         for off in ("light", "object", "scene"):
             scene, light, box = floor_scene('POINT')
             if off == "light":

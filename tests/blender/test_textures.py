@@ -119,9 +119,9 @@ class TexelsAtTheirPlaces(unittest.TestCase):
 
 class RoundedEdgesUnderTheImage(unittest.TestCase):
     def test_bands_and_corners_take_the_texel_not_the_images_mean(self):
-        """A cube whose every corner maps into the red half of a half-red, half-blue image: its
+        """A cube whose every corner maps into the red half of a half-blue, half-red image: its
         bands and corner patches are red, as a bevel under that image would be; the image's mean
-        (purple) would give them as much blue as red."""
+        (purple) would give them as much blue as red, and a UV of zero (none found) blue."""
         helpers.needs_gpu()
         scene = helpers.empty_scene(160, 160, highlights=True)
         helpers.set_world_color(scene, (0.3, 0.3, 0.3))
@@ -130,11 +130,11 @@ class RoundedEdgesUnderTheImage(unittest.TestCase):
         bpy.ops.mesh.primitive_cube_add(size=2.0)
         ob = bpy.context.object
         layer = ob.data.uv_layers.active
-        layer.data.foreach_set("uv", np.tile([0.25, 0.5], len(layer.data)).astype(np.float32))
+        layer.data.foreach_set("uv", np.tile([0.75, 0.5], len(layer.data)).astype(np.float32))
         img = bpy.data.images.new("Halves", 4, 2)
         px = np.zeros((2, 4, 4), np.float32)
-        px[:, :2] = (1.0, 0.0, 0.0, 1.0)
-        px[:, 2:] = (0.0, 0.0, 1.0, 1.0)
+        px[:, :2] = (0.0, 0.0, 1.0, 1.0)
+        px[:, 2:] = (1.0, 0.0, 0.0, 1.0)
         img.pixels.foreach_set(px.reshape(-1))
         mat = zoo.material("Halves", (0.8, 0.8, 0.8))
         mat.use_nodes = True
@@ -163,6 +163,13 @@ class SaidWhenNotDrawn(unittest.TestCase):
         said = [m for _, m in rec.get("messages", []) if "'Textured'" in m]
         print(said)
         self.assertTrue(any("Base Color from Gamma" in m for m in said), said)
+
+    def test_under_toon_shading_the_image_is_its_mean_and_that_is_said(self):
+        scene, ob, mat = quad_scene()
+        mat.edgelight.shading = 'RAMP'
+        rec = helpers.render()
+        said = " ".join(m for _, m in rec.get("messages", []))
+        self.assertIn("is drawn as its mean colour under toon shading", said)
 
     def test_a_uv_map_the_mesh_lacks(self):
         quad_scene(uv_map="Nope")
