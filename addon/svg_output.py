@@ -117,11 +117,12 @@ class EDGELIGHT_OT_export_svg(bpy.types.Operator):
 
     @staticmethod
     def _export_view(context, camera, path):
-        from . import engine, lines, scene_sync
+        from . import lines, native, scene_sync
         from .passes import frame
-        lib, error = engine.load_library()
-        if lib is None:
-            raise RuntimeError(f"EdgeLight: native library unavailable: {error}")
+        try:
+            lib = native.load()  # as the engine loads it, without importing the engine
+        except native.NativeError as e:
+            raise RuntimeError(f"EdgeLight: native library unavailable: {e}") from None
         depsgraph = context.evaluated_depsgraph_get()
         line_settings = lines.settings_of(context.scene.edgelight)
         data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings)
