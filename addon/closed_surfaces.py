@@ -35,15 +35,19 @@ def bounds(positions):
     return np.stack([p.min(axis=0), p.max(axis=0)])
 
 
+def box_corners(boxes):
+    """(..., 8, 3) corners of (..., 2, 3) boxes (low corner, high corner)."""
+    pick = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], bool)  # (8, 3): hi where set
+    return np.where(pick, boxes[..., 1:2, :], boxes[..., 0:1, :])
+
+
 def hidden_back_faces(box, matrix, clip_matrix):
     """Whether an instance's back faces are hidden (to be culled): its bounding box (object
     space) under `matrix` lies wholly in front of the camera's near plane (clip_matrix: the
     camera's projection times its view), so the eye, and the near plane that would cut the
     surface open, lie outside the solid. Boxes (..., 2, 3) and matrices (..., 4, 4) stacked:
     one answer per instance, all at once."""
-    box = np.asarray(box, np.float64)
-    pick = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], bool)  # (8, 3): hi where set
-    corners = np.where(pick, box[..., 1:2, :], box[..., 0:1, :])                          # (..., 8, 3)
+    corners = box_corners(np.asarray(box, np.float64))                                    # (..., 8, 3)
     corners = np.concatenate([corners, np.ones(corners.shape[:-1] + (1,))], axis=-1)
     full = np.asarray(clip_matrix, np.float64) @ np.asarray(matrix, np.float64)
     clip = np.einsum("...ck,...jk->...cj", corners, full)

@@ -14,19 +14,38 @@ def srgb_to_linear(c):
     return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
 
+def is_srgb_bytes(image):
+    """Whether Blender's pixels of the image are sRGB-encoded (a byte image in sRGB): Blender
+    gives a float image's pixels linear, and a byte image's in its own colour space."""
+    return not image.is_float and image.colorspace_settings.name == 'sRGB'
+
+
+def linearise_bytes(px):
+    """Decodes (h, w, c) float32 pixels of an sRGB byte image to linear in place, colour
+    channels only, through the 256 values a byte holds and a band of rows at a time: a large
+    image costs its own floats and little more."""
+    lut = srgb_to_linear(np.arange(256) / 255.0).astype(np.float32)
+    colour = min(px.shape[2], 3)
+    for y0 in range(0, px.shape[0], 256):
+        band = px[y0:y0 + 256, :, :colour]
+        band[...] = lut[np.rint(band * 255.0).astype(np.uint8)]
+    return px
+
+
 def mean_color(image):
-    """The image's mean colour, scene-linear: Blender's pixels are linear for a float image, and in
-    the image's colour space for a byte one (sRGB decoded here; Non-Color and linear spaces as
-    they are)."""
+    """The image's mean colour, scene-linear (is_srgb_bytes: decoded here; Non-Color and linear
+    spaces as they are)."""
     key = (image.as_pointer(), tuple(image.size), image.filepath, image.is_dirty, image.colorspace_settings.name)
     if key not in _means:
         w, h = image.size
-        px = np.empty(w * h * image.channels, np.float32)
+        c = image.channels
+        px = np.empty(w * h * c, np.float32)
         image.pixels.foreach_get(px)
-        rgb = px.reshape(-1, image.channels)[:, :3] if image.channels >= 3 else np.repeat(px.reshape(-1, 1), 3, axis=1)
-        mean = rgb.astype(np.float64).mean(axis=0) if len(rgb) else np.full(3, 0.8)
-        if not image.is_float and image.colorspace_settings.name == 'sRGB':
-            mean = srgb_to_linear(rgb).mean(axis=0) if len(rgb) else mean
+        px = px.reshape(h, w, c)
+        if is_srgb_bytes(image):
+            linearise_bytes(px)
+        rgb = px.reshape(-1, c)[:, :3 if c >= 3 else 1]  # a grey image: its one value in all three
+        mean = np.broadcast_to(rgb.mean(axis=0, dtype=np.float64), (3,)) if len(rgb) else np.full(3, 0.8)
         if len(_means) > 64:
             _means.clear()
         _means[key] = tuple(float(v) for v in mean)

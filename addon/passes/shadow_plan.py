@@ -9,6 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..closed_surfaces import box_corners
 from . import shader_specs
 
 _SPEC = shader_specs.load("frame_data.json")
@@ -88,12 +89,6 @@ def world_boxes(instances):
     corners = box_corners(boxes)                                   # (n, 8, 3)
     world = np.einsum("nij,nkj->nki", mats[:, :3, :3], corners) + mats[:, None, :3, 3]
     return np.stack([world.min(axis=1), world.max(axis=1)], axis=1), picked
-
-
-def box_corners(boxes):
-    """(..., 8, 3) corners of (..., 2, 3) boxes."""
-    pick = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], bool)
-    return np.where(pick, boxes[..., 1:2, :], boxes[..., 0:1, :])
 
 
 def look(eye, forward, up):

@@ -4,7 +4,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from .. import compat
+from .. import compat, textures
 
 RAMP_SIZE = 256
 # Texels an X-Toon map keeps per axis: the lookup reads lighting (x) and depth or orientation
@@ -59,10 +59,6 @@ def builtin_map(base, width=64, height=32):
     return np.concatenate([rgb, np.ones((height, width, 1))], axis=2).astype(np.float32)
 
 
-def _srgb_to_linear(c):
-    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
-
-
 def box_reduce(px, axis, size):
     """px averaged along `axis` into `size` equal spans (each output texel the mean of the input
     texels whose centres fall in its span); unchanged if it has no more than `size`."""
@@ -86,20 +82,15 @@ def image_texels(image):
     px = np.empty(w * h * c, np.float32)
     image.pixels.foreach_get(px)
     px = px.reshape(h, w, c)
-    srgb = not image.is_float and image.colorspace_settings.name == 'sRGB'
+    srgb = textures.is_srgb_bytes(image)
     if srgb and (w > MAP_MAX or h > MAP_MAX):
-        # Averaged in linear light: the rows are linearised a band at a time, in place, so a large
-        # image costs its own floats and little more.
-        lut = _srgb_to_linear(np.arange(256) / 255.0).astype(np.float32)  # a byte image's 256 values
-        for y0 in range(0, h, 256):
-            band = px[y0:y0 + 256, :, :min(c, 3)]
-            band[...] = lut[np.rint(band * 255.0).astype(np.uint8)]
+        textures.linearise_bytes(px)  # averaged in linear light
         srgb = False
     px = box_reduce(box_reduce(px, 1, MAP_MAX), 0, MAP_MAX)
     if c < 4:
         px = np.concatenate([px, np.ones(px.shape[:2] + (4 - c,), np.float32)], axis=2)
     if srgb:
-        px[..., :3] = _srgb_to_linear(px[..., :3])
+        px[..., :3] = textures.srgb_to_linear(px[..., :3])
     return np.ascontiguousarray(px, np.float32)
 
 
