@@ -11,11 +11,12 @@ from .passes import shader_specs
 
 # Principled BSDF inputs EdgeLight reads as values (materials.shading_of); a link into one is
 # not followed: its socket's own value is drawn. Names of 3.4 and of 4.0+ (renamed sockets).
-READ = ("Base Color", "Metallic", "Roughness", "Specular", "Specular IOR Level", "Alpha")
+READ = ("Base Color", "Metallic", "Roughness", "Specular", "Specular IOR Level", "Alpha", "Emission", "Emission Color",
+        "Emission Strength")
 # Inputs an Image Texture may feed (image_input): drawn, so not said.
 TEXTURED = ("Base Color",)
-# Inputs that change the look when linked, though EdgeLight uses the mesh's normals and no emission.
-LINKED_IGNORED = ("Normal", "Emission", "Emission Color", "Emission Strength")
+# Inputs that change the look when linked, though EdgeLight uses the mesh's normals.
+LINKED_IGNORED = ("Normal",)
 # Lobes EdgeLight does not draw: (label, weight sockets by version). On when a weight is above 0.
 LOBES = (("Subsurface", ("Subsurface", "Subsurface Weight")),
          ("Transmission", ("Transmission", "Transmission Weight")),
@@ -124,7 +125,7 @@ def output_node(tree):
 def world_background(world):
     """(the Background node whose colour and strength light the scene or None, the node on the
     world output's Surface or None): the output's own when it is one, else the first in the
-    tree (scene_sync.world_ambient reads the same)."""
+    tree (world_light.read reads the same)."""
     if world is None or not compat.uses_nodes(world):
         return None, None
     tree = world.node_tree
@@ -177,11 +178,6 @@ def unread_inputs(node):
             out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)} (its value {_value(socket)} is drawn)"))
         else:
             out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)}"))
-    strength = node.inputs.get("Emission Strength")
-    color = node.inputs.get("Emission Color") or node.inputs.get("Emission")
-    if strength is not None and color is not None and not strength.is_linked and not color.is_linked:
-        if float(strength.default_value) > 0.0 and max(float(c) for c in color.default_value[:3]) > 0.0:
-            out.append(("Emission", f"Emission (colour {_value(color)}, strength {float(strength.default_value):.3g})"))
     for label, names in LOBES:
         for name in names:
             socket = node.inputs.get(name)
@@ -201,24 +197,3 @@ def note(material, unread):
 def panel_line(unread):
     """The material panel's one line."""
     return "Not drawn: " + ", ".join(short for short, _long in unread) if unread else ""
-
-
-def world_note(world):
-    """The report line for a world whose light EdgeLight does not read; "" when it reads it all."""
-    background, surface = world_background(world)
-    if surface is not None and surface is not background:
-        used = (f"the Background '{background.name}' lights the scene" if background is not None
-                else "the world's viewport colour lights the scene")
-        return f"world '{world.name}': its Surface is a {_describe(surface)}, which EdgeLight does not read; {used}"
-    if background is None:
-        return ""
-    said = []
-    for name in ("Color", "Strength"):
-        source = _from_node(background.inputs[name])
-        if source is not None:
-            said.append(f"its {name} comes from {_describe(source)}")
-    if not said:
-        return ""
-    return (f"world '{world.name}': " + " and ".join(said) + ", which EdgeLight does not read; the socket values "
-            f"(colour {_value(background.inputs['Color'])}, strength "
-            f"{float(background.inputs['Strength'].default_value):.3g}) light the scene")

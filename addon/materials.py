@@ -51,6 +51,7 @@ class Shading:
     material: str = ""     # the material's name_full ("" without one): keys the radius clamp notes
     pass_index: int = 0    # the material's Pass Index (the Material Index render pass)
     texture: object = None  # BaseTexture: an image drawn into Base Color by the surface pass
+    emission: tuple = (0.0, 0.0, 0.0)  # Emission colour x strength, scene-linear radiance
 
 
 @dataclass(frozen=True)
@@ -135,7 +136,9 @@ def shading_of(material):
         metallic = _float(node, 0.0, "Metallic")
         specular = _float(node, 0.5, "Specular", "Specular IOR Level")  # renamed in 4.0
         alpha = _float(node, 1.0, "Alpha")
+        emission = emission_of(node)
     else:
+        emission = (0.0, 0.0, 0.0)
         base = tuple(material.diffuse_color[:3])
         alpha = float(material.diffuse_color[3])
         roughness = float(material.roughness)
@@ -157,7 +160,18 @@ def shading_of(material):
     texture = BaseTexture(image, metallic, (f0 * (1.0 - metallic),) * 3) if image is not None else None
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full,
-                   int(material.pass_index), texture)
+                   int(material.pass_index), texture, emission)
+
+
+def emission_of(node):
+    """A Principled BSDF's emitted radiance: its Emission colour (3.4: Emission; 4.0+: Emission
+    Color) x Emission Strength, the sockets' values (a link into them is said: material_inputs)."""
+    color = _input(node, "Emission Color", "Emission")
+    strength = _float(node, 1.0, "Emission Strength")
+    if color is None or not math.isfinite(strength):
+        return (0.0, 0.0, 0.0)
+    out = tuple(max(float(c), 0.0) * max(strength, 0.0) for c in color[:3])
+    return out if all(math.isfinite(c) for c in out) else (0.0, 0.0, 0.0)
 
 
 def usable_toon(material_name, toon):

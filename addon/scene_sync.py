@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import bpy
 import numpy as np
 
-from . import closed_surfaces, compat, material_inputs, native, radius_clamp, render_cache
+from . import closed_surfaces, compat, native, radius_clamp, render_cache, world_light
 from .edge_choice import choice_key, choose_edges, same_edges
 from .edge_data import EdgeData, first_two_faces
 from .lines import static_lines
@@ -106,6 +106,7 @@ class SceneData:
     ambient: tuple
     reports: list                      # what was skipped and why
     failed: list = field(default_factory=list)  # the objects skipped for an error in their data
+    environment: object = None         # world_light.Environment: an image lights the scene
 
 
 class SkipObject(Exception):
@@ -397,17 +398,6 @@ def light_radius(data):
     return float(getattr(data, "shadow_soft_size", 0.0))
 
 
-def world_ambient(scene):
-    world = scene.world
-    if world is None:
-        return (0.0, 0.0, 0.0)
-    node, _ = material_inputs.world_background(world)  # the one the world's note speaks of
-    if node is not None:
-        c, s = node.inputs["Color"].default_value, node.inputs["Strength"].default_value
-        return tuple(float(v) * float(s) for v in c[:3])
-    return tuple(float(v) for v in world.color)
-
-
 # Types no engine draws as a surface: passed over without a word.
 _SILENT_TYPES = {'EMPTY', 'CAMERA', 'LIGHT_PROBE', 'LIGHTPROBE', 'SPEAKER', 'ARMATURE', 'LATTICE'}
 _TYPE_NAMES = {'VOLUME': "volume", 'POINTCLOUD': "point cloud", 'CURVES': "hair curves",
@@ -581,7 +571,7 @@ def collect(depsgraph, lib=None, line_settings=None, cache=None):
     note = not_drawn_note(not_drawn)
     if note:
         reports.append(note)
-    world = material_inputs.world_note(depsgraph.scene.world)
-    if world:
-        reports.append(world)
-    return SceneData(instances, lights, world_ambient(depsgraph.scene), reports, failed)
+    world = world_light.read(depsgraph.scene.world)
+    if world.note:
+        reports.append(world.note)
+    return SceneData(instances, lights, world.ambient, reports, failed, world.environment)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import bpy
 import numpy as np
 
-from . import edge_choice, lines, material_inputs, scene_sync
+from . import edge_choice, lines, scene_sync, world_light
 from .materials import shading_of
 from .passes import batches, camera, frame, frame_data, line_pass, shadow_plan, toon, view_lines
 from .passes.targets import Targets
@@ -64,6 +64,8 @@ class ViewportState:
         self.instances = []
         self.lights = []
         self.ambient = (0.0, 0.0, 0.0)
+        self.environment = None
+        self.world = None  # world_light.WorldLight, read again when the world may have changed
         self.reports = []              # what the status bar says: the notes below, once each
         self.status_text = ""          # what it last said (the viewport tests read it)
         self.notes = {}                # geometry key -> its extraction's notes (or why it was skipped)
@@ -87,8 +89,12 @@ class ViewportState:
         """`space`: the 3D view (its local view hides what is not in it)."""
         self.counters.updates += 1
         geometry, shading = set(), False
+        # The world is read again when it, an image or the scene (which world it has) changed:
+        # reading an Environment Texture's image costs its pixels.
+        world_stale = self.world is None
         for update in depsgraph.updates:
             idb = update.id
+            world_stale = world_stale or isinstance(idb, (bpy.types.World, bpy.types.Image, bpy.types.Scene))
             if isinstance(idb, bpy.types.Object) and update.is_updated_geometry:
                 geometry.add(idb.name)
             elif isinstance(idb, bpy.types.Material) or (isinstance(idb, bpy.types.Object) and update.is_updated_shading):
@@ -133,12 +139,14 @@ class ViewportState:
         self.scene_notes = [note] if note else []
         if len(lights) > frame_data.MAX_LIGHTS:
             self.scene_notes.append(f"{len(lights)} lights; the {frame_data.MAX_LIGHTS} first are used")
-        world = material_inputs.world_note(depsgraph.scene.world)
-        if world:
-            self.scene_notes.append(world)
+        if world_stale:
+            self.world = world_light.read(depsgraph.scene.world)
+        world = self.world
+        if world.note:
+            self.scene_notes.append(world.note)
         self._gather_reports()
         self.instances, self.lights = instances, lights
-        self.ambient = scene_sync.world_ambient(depsgraph.scene)
+        self.ambient, self.environment = world.ambient, world.environment
         # Updates that change nothing drawn (selection, UI, colour management, which the display
         # shader applies) keep the last image.
         signature = scene_signature(self, depsgraph.scene)
@@ -225,7 +233,7 @@ class ViewportState:
         if self.image_valid and not fresh:
             self.counters.cache_hits += 1
         else:
-            scene = scene_sync.SceneData(self.instances, self.lights, self.ambient, [])
+            scene = scene_sync.SceneData(self.instances, self.lights, self.ambient, [], environment=self.environment)
             s = frame.Settings(samples=settings.viewport_samples, highlights=settings.highlights,
                                transparent=depsgraph.scene.render.film_transparent, lines=self.line_settings,
                                shadows=shadow_plan.settings_of(settings))
@@ -333,7 +341,7 @@ def scene_signature(state, scene):
             state.line_settings,
             tuple((lt.kind, lt.color, lt.position, lt.direction, lt.spot_cos, lt.spot_blend, lt.shadow, lt.radius)
                   for lt in state.lights),
-            state.ambient, s.viewport_samples, s.highlights, scene.render.film_transparent,
+            state.ambient, state.environment and state.environment.key, s.viewport_samples, s.highlights, scene.render.film_transparent,
             shadow_plan.settings_of(s))
 
 

@@ -20,7 +20,15 @@ void main()
   float a = hl.a + (1.0 - hl.a) * surf.a;
   rgb = ln.a * ln.rgb + (1.0 - ln.a) * rgb;
   a = ln.a + (1.0 - ln.a) * a;
-  out_color = vec4(rgb + (1.0 - a) * world * background.rgb, mix(a, 1.0, world)) * weight;
+  vec3 behind = background.rgb;
+#ifdef EL_ENVIRONMENT
+  /* The Environment Texture along the pixel's ray: between its points on the near and far
+   * planes, so orthographic views read it too. */
+  vec2 ndc = gl_FragCoord.xy * frame.viewport.zw * 2.0 - 1.0;
+  vec4 near = frame.clip_to_world * vec4(ndc, -1.0, 1.0), far = frame.clip_to_world * vec4(ndc, 1.0, 1.0);
+  behind = el_world_background(normalize(far.xyz / far.w - near.xyz / near.w));
+#endif
+  out_color = vec4(rgb + (1.0 - a) * world * behind, mix(a, 1.0, world)) * weight;
 #ifdef EL_SURFACE_PASS
   out_surface = surf * weight; /* the Surface render pass: the sample mean of the surface alone */
 #endif

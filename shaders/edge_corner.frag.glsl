@@ -19,7 +19,8 @@ vec3 el_corner_colour(vec3 X, vec3 N, vec3 V)
   f0 += texel * (1.0 - base_color.r);
   albedo = texel * base_color.rgb;
 #endif
-  vec3 col = frame.ambient.rgb * (albedo + tint.rgb * el_env_specular(f0, spec_color.w, dot(N, V)));
+  vec3 col = material.emission.rgb + albedo * el_world_diffuse(N) +
+             tint.rgb * el_world_specular(reflect(-V, N), spec_color.w) * el_env_specular(f0, spec_color.w, dot(N, V));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
     col += el_blinn_phong(i, X, N, V, albedo, tint.rgb * f0, spec_color.w);

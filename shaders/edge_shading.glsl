@@ -30,7 +30,27 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
   float n = spec_color.w;
   /* The world on the arc: its lobe's albedo at the arc's mean cosine to the eye. */
   float nv = el_arc_mean(g, V, edge, 1.0);
+#ifdef EL_ENVIRONMENT
+  /* Under an image the world differs along the arc: its irradiance and prefiltered radiance
+   * at 8 Gauss points of the visible part, weighted as the arc's means are, by projected
+   * width N.V (docs/highlight_math.md, "The world's environment on the arc"). */
+  vec3 diff = vec3(0.0), refl = vec3(0.0);
+  float wsum = 0.0;
+  float mid = 0.5 * (g.vis.lo + g.vis.hi), half_len = 0.5 * max(g.vis.hi - g.vis.lo, 0.0);
+  for (int j = 0; j < 8; j++) {
+    float t = mid + half_len * ((j & 1) == 0 ? el_gl_x[j >> 1] : -el_gl_x[j >> 1]);
+    vec3 N = g.a1 * cos(t) + g.b1 * sin(t);
+    float w = el_gl_w[j >> 1] * max(dot(N, V), 0.0);
+    diff += w * el_world_diffuse(N);
+    refl += w * el_world_specular(reflect(-V, N), n);
+    wsum += w;
+  }
+  wsum = max(wsum, 1e-30);
+  vec3 col = el_albedo() * (diff / wsum) + tint.rgb * (refl / wsum) * el_env_specular(el_f0(), n, nv);
+#else
   vec3 col = frame.ambient.rgb * (el_albedo() + tint.rgb * el_env_specular(el_f0(), n, nv));
+#endif
+  col += material.emission.rgb; /* the fillet glows as its faces do */
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
     vec3 L, E;
@@ -48,7 +68,8 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
  * shades it (Blinn-Phong mode): what a band replaces of it (el_faces_under_band). */
 vec3 el_face_colour(vec3 N, vec3 X, vec3 V)
 {
-  vec3 col = frame.ambient.rgb * (el_albedo() + el_env_specular(el_f0(), spec_color.w, dot(N, V)));
+  vec3 col = material.emission.rgb + el_albedo() * el_world_diffuse(N) +
+             el_world_specular(reflect(-V, N), spec_color.w) * el_env_specular(el_f0(), spec_color.w, dot(N, V));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
     col += el_blinn_phong(i, X, N, V, el_albedo(), el_f0(), spec_color.w);

@@ -75,7 +75,8 @@ void main()
   }
   if (mode == EL_SURFACE_MODE_RAMP || mode == EL_SURFACE_MODE_XTOON) {
     float x = el_toon_light(N, world_pos);
-    out_color = vec4(mode == EL_SURFACE_MODE_RAMP ? el_toon_ramp(x) : el_xtoon(x, view_depth, N, V), base_color.a);
+    vec3 toon_col = mode == EL_SURFACE_MODE_RAMP ? el_toon_ramp(x) : el_xtoon(x, view_depth, N, V);
+    out_color = vec4(toon_col + material.emission.rgb, base_color.a); /* emission on top, as EEVEE adds it */
     return;
   }
   vec3 albedo = base_color.rgb;
@@ -89,7 +90,10 @@ void main()
   spec += texel * (1.0 - base_color.r);
   albedo = texel * base_color.rgb;
 #endif
-  vec3 col = frame.ambient.rgb * (albedo + el_env_specular(spec, n, dot(N, V)));
+  /* The world: its irradiance on the albedo, its prefiltered radiance around the reflection
+   * times the lobe's directional albedo (the split sum; environment.glsl). */
+  vec3 col = material.emission.rgb + albedo * el_world_diffuse(N) +
+             el_world_specular(reflect(-V, N), n) * el_env_specular(spec, n, dot(N, V));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
     col += el_blinn_phong(i, world_pos, N, V, albedo, spec, n);

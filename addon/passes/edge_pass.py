@@ -2,24 +2,24 @@
 method (shaders/edge_highlight.*), premultiplied into the highlight target, once per frame; then
 the corner patches over them (batches.corner_batches, shaders/edge_corner.*)."""
 from . import frame_data, pass_state, shader_lib, table
+from .lighting_inputs import NONE
 from .surface_pass import (
     SURFACE_MODES,
     shading_uniforms,
-    shadow_defines,
     texture_defines,
     texture_key,
     textured_uniforms,
 )
 
 
-def draw_highlights(targets, scene, gpu_meshes, ubo, stats, shadow_maps=None):
+def draw_highlights(targets, scene, gpu_meshes, ubo, stats, lighting=NONE):
     """Each instance's rounded edges into targets.highlight (the first sample's: the band's
     coverage is filtered across the edge analytically, docs/addon.md); counted in
-    stats.edges_drawn. `shadow_maps`: surface_pass.draw_surface's."""
+    stats.edges_drawn. `lighting`: surface_pass.draw_surface's."""
     tex, info = table.table()
     # The table layout is fixed in the program (highlight_arc.glsl); the surface pass wrote ids:
     # visibility by face (docs/lines.md).
-    defines = {**pass_state.table_defines("edge_highlight", info), "EL_EDGE_IDS": 1, **shadow_defines(shadow_maps)}
+    defines = {**pass_state.table_defines("edge_highlight", info), "EL_EDGE_IDS": 1, **lighting.defines()}
     with pass_state.drawing("edge_highlight", targets.highlight_fb):
         # A Blinn-Phong material's bands replace the sharp faces under them (el_faces_under_band);
         # a toon material's faces are shaded otherwise, so its bands blend over the pixel.
@@ -41,11 +41,10 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats, shadow_maps=None):
             shader.uniform_block("frame", ubo)
             pass_state.bind_table(shader, "edge_highlight", tex, info)
             pass_state.bind_inputs(shader, "edge_highlight", targets)
-            if shadow_maps is not None:
-                shader_lib.set_sampler(shader, "shadow_maps", shadow_maps)
+            lighting.bind(shader)
             for gm, slot in _draw_per_slot(shader, scene, gpu_meshes, slots, textured=image is not None):
                 stats.edges_drawn += len(gm.extract.edges[slot])
-    draw_corners(targets, scene, gpu_meshes, ubo, shadow_maps)
+    draw_corners(targets, scene, gpu_meshes, ubo, lighting)
 
 
 def _is_phong(shading):
@@ -56,7 +55,7 @@ def _mode(shading):
     return int(shading.toon.mode)
 
 
-def draw_corners(targets, scene, gpu_meshes, ubo, shadow_maps=None):
+def draw_corners(targets, scene, gpu_meshes, ubo, lighting=NONE):
     """Each instance's corner patches into targets.highlight, replacing the bands' mitres under
     them: the target scaled by 1 - each patch's coverage, then the patches added (a slot drawing
     an image in its own variant, the texel at the corner's vertex)."""
@@ -68,7 +67,7 @@ def draw_corners(targets, scene, gpu_meshes, ubo, shadow_maps=None):
         return texture_key(s, _mode(s)) or ()  # a toon slot's corners take the mean, as its bands
 
     keys = sorted({key_of(gm, k) for gm in (gpu_meshes[id(inst.mesh)] for inst in scene.instances) for k in gm.corners})
-    for pass_name, defines in (("edge_corner_cover", {"EL_CORNER_COVER": 1}), ("edge_corner", shadow_defines(shadow_maps))):
+    for pass_name, defines in (("edge_corner_cover", {"EL_CORNER_COVER": 1}), ("edge_corner", lighting.defines())):
         cover = pass_name != "edge_corner"
         with pass_state.drawing(pass_name, targets.highlight_fb):
             for key in [()] if cover else keys:
@@ -76,8 +75,8 @@ def draw_corners(targets, scene, gpu_meshes, ubo, shadow_maps=None):
                 shader = shader_lib.get("edge_corner", {**defines, **texture_defines(image)})
                 shader.bind()
                 shader.uniform_block("frame", ubo)
-                if "EL_SHADOWS" in defines:
-                    shader_lib.set_sampler(shader, "shadow_maps", shadow_maps)
+                if not cover:
+                    lighting.bind(shader)
                 pass_state.bind_inputs(shader, pass_name, targets)
 
                 def slots(gm, key=key, cover=cover):

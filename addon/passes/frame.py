@@ -24,6 +24,7 @@ from . import (
 )
 from .camera import Camera, jitter, jittered_projection  # noqa: F401 - Camera: engine.py and svg_output.py
 from .frame_data import MAX_LIGHTS  # noqa: F401 - engine.py reports past the light limit
+from .lighting_inputs import LightingInputs
 from .targets import Targets, read, unbind_targets
 
 
@@ -71,6 +72,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         shadow_maps = shadow_pass.draw(shadows, scene, gpu_meshes, targets.shadow_maps)
     else:
         targets.shadow_maps.release()  # Shadows off: the viewport's atlas goes
+    lighting = LightingInputs(shadow_maps, targets.environment.texture_of(None if unlit else scene.environment))
     if shadows and shadows.left_out and scene.reports is not None:
         scene.reports.append(f"{shadows.left_out} light{'s' if shadows.left_out != 1 else ''} cast no shadow: "
                              f"the lights before took all {settings.shadows.max_layers} shadow layers")
@@ -85,7 +87,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         # it alone, and for the Object Index pass.
         surface_pass.draw_surface(targets, scene, gpu_meshes, ubo, whiteout, ids=s == 0 and (
             settings.ids or settings.lines is not None or (settings.highlights and not whiteout)),
-            rounded=settings.highlights and not whiteout, culls=culls, shadow_maps=shadow_maps)
+            rounded=settings.highlights and not whiteout, culls=culls, lighting=lighting)
         if s == 0 and first_sample:
             first_sample()
         # The edge and line passes run once, on the unjittered first sample: their coverage is
@@ -93,7 +95,7 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         # only the surface is re-jittered (docs/addon.md).
         if s == 0:
             if settings.highlights and not whiteout:
-                edge_pass.draw_highlights(targets, scene, gpu_meshes, ubo, stats, shadow_maps)
+                edge_pass.draw_highlights(targets, scene, gpu_meshes, ubo, stats, lighting)
             else:
                 with targets.highlight_fb.bind():
                     targets.highlight_fb.clear(color=(0.0, 0.0, 0.0, 0.0))
@@ -101,7 +103,8 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
             if line_pass.draw_lines(targets, view_lines.line_instances(scene, gpu_meshes, view_batches) if settings.lines else [],
                                     settings.lines, ubo, stats, checkpoint, rounded=settings.highlights and not whiteout):
                 break
-        composite_pass.draw_composite(targets, background, full_screen, 1.0 / samples, settings.lines_in_combined)
+        composite_pass.draw_composite(targets, background, full_screen, 1.0 / samples, settings.lines_in_combined,
+                                      ubo, lighting)
         stats.samples += 1
         if progress:
             progress(s + 1, samples)

@@ -18,8 +18,11 @@ def pack(camera, projection, scene, shadows=None, sample=0):
     """The FrameData block's floats (members: shaders/frame_data.json). `shadows`: the frame's
     shadow_plan.ShadowPlan (None: no light casts); `sample`: the sample's number."""
     lights = scene.lights[:MAX_LIGHTS]
+    clip = np.asarray(projection, np.float64) @ np.asarray(camera.view, np.float64)
     return FRAME_DATA.pack({
         **_shadow_members(shadows, sample),
+        **_environment_members(getattr(scene, "environment", None)),
+        "clip_to_world": mat4(np.linalg.inv(clip)),
         "view": mat4(camera.view),
         "projection": mat4(projection),
         "eye": (*camera.eye, 0.0 if camera.orthographic else 1.0),
@@ -33,6 +36,21 @@ def pack(camera, projection, scene, shadows=None, sample=0):
         "light_direction": [(*light.direction, light.spot_cos) for light in lights],
         "light_spot": [(light.spot_blend, 0.0, 0.0, 0.0) for light in lights],
     })
+
+
+def _environment_members(env):
+    """The world image's members (world_light.Environment; shaders/environment.glsl)."""
+    if env is None:
+        return {}
+    atlas = env.atlas
+    rotation = np.eye(4)
+    rotation[:3, :3] = env.rotation
+    return {
+        "env": (float(len(atlas.levels)), env.strength, 0.0, 0.0),
+        "env_level": [tuple(float(v) for v in r) for r in atlas.levels],
+        "env_irradiance": tuple(float(v) for v in atlas.irradiance),
+        "env_rotation": mat4(rotation),
+    }
 
 
 def _shadow_members(plan, sample):

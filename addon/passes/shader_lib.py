@@ -46,7 +46,8 @@ def get(name, defines=None):
         shader = _cache[key] = _build(name, d, defines, source_dir)
         declared = [var for _, var in d["push_constants"]]
         _names[id(shader)] = (frozenset(declared), frozenset(v for v in declared if _kept(shader, v)),
-                              frozenset(var for _, var in d["samplers"]))
+                              frozenset(var for _, var in d["samplers"]),
+                              {var: _kept_block(shader, var) for _, _, var in d["uniform_bufs"]})
     return shader
 
 
@@ -57,7 +58,7 @@ def set_uniform(shader, name, value):
     lighting inputs in the edge pass's no-shading benchmark variant), and Blender refuses to set a dropped
     uniform; the callers set everything the pass has and need not know which variant reads what.
     A name programs.json does not declare for the program is still an error."""
-    declared, kept, _ = _names[id(shader)]
+    declared, kept, _, _ = _names[id(shader)]
     if name not in declared:
         raise KeyError(f"EdgeLight: the program declares no push constant '{name}'")
     if name in kept:
@@ -71,6 +72,25 @@ def set_sampler(shader, name, texture):
     if name not in _names[id(shader)][2]:
         raise KeyError(f"EdgeLight: the program declares no sampler '{name}'")
     shader.uniform_sampler(name, texture)
+
+
+def set_block(shader, name, ubo):
+    """Binds uniform buffer `ubo` to block `name` of a program from get() if its variant's
+    compiler kept the block (a whiteout surface reads no material block; Blender refuses to bind
+    a dropped one). A name programs.json does not declare is an error."""
+    blocks = _names[id(shader)][3]
+    if name not in blocks:
+        raise KeyError(f"EdgeLight: the program declares no uniform block '{name}'")
+    if blocks[name]:
+        shader.uniform_block(name, ubo)
+
+
+def _kept_block(shader, name):
+    try:
+        shader.uniform_block_from_name(name)
+    except ValueError:
+        return False
+    return True
 
 
 def _kept(shader, name):

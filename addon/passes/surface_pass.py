@@ -4,7 +4,8 @@ import gpu
 import numpy as np
 
 from .. import closed_surfaces, rounded_outline, textures
-from . import frame_data, pass_state, shader_lib, shader_specs, toon
+from . import frame_data, material_data, pass_state, shader_lib, shader_specs, toon
+from .lighting_inputs import NONE
 from .targets import surface_outputs
 
 # The surface program's shading modes and an image's extensions (shaders/surface_modes.json).
@@ -13,9 +14,11 @@ EXTEND = shader_specs.enum("surface_modes.json", "EL_EXTEND")
 
 
 def shading_uniforms(shader, s):
-    """A material slot's colours (materials.Shading), shared by the surface and edge passes."""
+    """A material slot's colours (materials.Shading), shared by the surface and edge passes, and
+    its MaterialData block (emission)."""
     shader_lib.set_uniform(shader, "base_color", (*s.base_color, s.alpha))
     shader_lib.set_uniform(shader, "spec_color", (*s.spec_color, s.shininess))
+    shader_lib.set_block(shader, "material", material_data.buffer(s))
 
 
 def _surface_mode(s, whiteout, holdout=False):
@@ -89,16 +92,12 @@ def textured_uniforms(shader, s):
     keep = 1.0 - t.metallic
     shader_lib.set_uniform(shader, "base_color", (keep, keep, keep, s.alpha))
     shader_lib.set_uniform(shader, "spec_color", (*t.f0, s.shininess))
+    shader_lib.set_block(shader, "material", material_data.buffer(s))
     shader_lib.set_sampler(shader, "base_tex", textures.gpu_texture(t.source.image))
 
 
-def shadow_defines(shadow_maps):
-    """The define of the variant that looks the lights' shadow maps up (shaders/shadows.glsl)."""
-    return {"EL_SHADOWS": 1} if shadow_maps is not None else {}
-
-
 def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False, culls=None,
-                 shadow_maps=None):
+                 lighting=NONE):
     """One program per shading mode in use (EL_SURFACE_MODE is fixed when it is built: a uniform
     branch would make every fragment pay for every mode on llvmpipe). With `ids`, the variant
     that also writes which instance and face covers each pixel (the line pass's visibility,
@@ -108,7 +107,7 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
     (batches.GpuMesh.outline), and those that list more edges than its vertex shader judges in
     a variant that judges the rest per pixel (EL_OUTLINE_MORE). `culls` (cull_modes), per instance: a closed surface's back
     faces culled where they cannot show (closed_surfaces.py), since the strips would show its
-    inside. `shadow_maps`: the frame's (shadow_pass.draw), or None where no light casts."""
+    inside. `lighting`: the frame's shadow maps and environment atlas (lighting_inputs.py)."""
     draws, firsts = {}, {}
     for index, inst in enumerate(scene.instances):
         gm = gpu_meshes[id(inst.mesh)]
@@ -135,7 +134,7 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
         for (mode, outline, tex), items in sorted(draws.items(), key=lambda kv: (kv[0][0], kv[0][1], kv[0][2] or ())):
             defines = {"EL_SURFACE_MODE": mode, **outputs, **texture_defines(tex)}
             if mode not in (SURFACE_MODES["HOLDOUT"], SURFACE_MODES["WHITEOUT"]):
-                defines.update(shadow_defines(shadow_maps))
+                defines.update(lighting.defines())
             if outline:
                 defines.update(EL_ROUNDED_OUTLINE=1, **rounded_outline.layout_defines())
             if outline == 2:
@@ -143,8 +142,8 @@ def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rou
             shader = shader_lib.get("surface", defines)
             shader.bind()
             shader.uniform_block("frame", ubo)
-            if "EL_SHADOWS" in defines:
-                shader_lib.set_sampler(shader, "shadow_maps", shadow_maps)
+            if mode not in (SURFACE_MODES["HOLDOUT"], SURFACE_MODES["WHITEOUT"]):
+                lighting.bind(shader)
             for matrix, s, batch, surface_ids, sides, cull in items:
                 gpu.state.face_culling_set(cull)
                 shader_lib.set_uniform(shader, "model", frame_data.mat4(matrix))

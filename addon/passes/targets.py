@@ -5,6 +5,7 @@ import numpy as np
 
 from .. import compat
 from . import batches, pass_state, shader_lib, shader_specs
+from .lighting_inputs import EnvironmentMaps
 from .shadow_pass import ShadowMaps
 
 
@@ -29,6 +30,7 @@ class Targets:
         self.line_fb = gpu.types.GPUFrameBuffer(depth_slot=self.line_depth, color_slots=(self.lines,))
         self.lines_empty = False  # the line target holds no stroke (cleared, none drawn since)
         self.shadow_maps = ShadowMaps()  # the lights' shadow maps, of their own size (shadow_pass.py)
+        self.environment = EnvironmentMaps()  # the world image's filtered atlas (lighting_inputs.py)
 
 
 def surface_outputs(targets, ids):

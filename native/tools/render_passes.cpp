@@ -45,17 +45,22 @@ struct Renderer::Impl {
     std::string dir;
     PassSpecs passes;   // shaders/passes.json: targets, pass state, the table's use
     Block frame_block;  // shaders/frame_data.json: FrameData's layout
+    Block material_block;  // shaders/material_data.json: a material's block, zeros here (no emission)
     Program surface, composite;
     std::map<std::tuple<int, bool, bool>, std::unique_ptr<Program>> edge_programs;  // method, quad fit, floor
     el_table_info table_info{};
     std::unique_ptr<Texture> table = highlight_table(table_info);
     UniformBuffer ubo;
+    UniformBuffer material_ubo;
     std::vector<float> fullscreen = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
     VertexArray fullscreen_vao{composite, {{"pos", &fullscreen, 2}}};
 
     explicit Impl(const std::string& shader_dir)
         : dir(shader_dir), passes(read_pass_specs(dir)), frame_block(dir, "frame_data.json"),
-          surface(assemble_program(dir, "surface")), composite(assemble_program(dir, "composite")) {}
+          material_block(dir, "material_data.json"), surface(assemble_program(dir, "surface")),
+          composite(assemble_program(dir, "composite")) {
+        material_ubo.upload(material_block.zeros());
+    }
 
     // The edge program with the table's defines of shaders/passes.json: the add-on's (method 0,
     // fitted quads, shaded), else the test and benchmark variant of bench/shaders/edge_methods.json
@@ -149,6 +154,7 @@ void Renderer::draw(Uploaded& up, const Camera& camera, int samples) {
         // EL_SURFACE_MODE has no toon inputs.
         begin_pass(r.passes, "surface", t, r.surface);
         r.surface.uniform_buf("frame", r.ubo.id());
+        r.surface.uniform_buf("material", r.material_ubo.id());
         r.shading(r.surface, m);
         up.surface_vao.draw_triangles();
         end_pass();
@@ -160,6 +166,7 @@ void Renderer::draw(Uploaded& up, const Camera& camera, int samples) {
             begin_pass(r.passes, "edge_highlight", t, edge);
             if (!scene.edge_depth_test) gl::Disable(GL_DEPTH_TEST);  // a test's check of the depth test
             edge.uniform_buf("frame", r.ubo.id());
+            edge.uniform_buf("material", r.material_ubo.id());
             edge.texture(edge_pass.table_sampler, *r.table);
             r.shading(edge, m);
             edge.set("tint", glm::vec4(m.tint, m.K));
@@ -169,6 +176,7 @@ void Renderer::draw(Uploaded& up, const Camera& camera, int samples) {
         }
 
         begin_pass(r.passes, "composite", t, r.composite);
+        r.composite.uniform_buf("frame", r.ubo.id());  // declared by the program; no environment here
         r.composite.set("background", glm::vec4(glm::vec3(scene.ambient), 1.0f));  // an opaque world
         r.composite.set("weight", 1.0f / float(samples));
         r.fullscreen_vao.draw_triangles();

@@ -34,7 +34,7 @@ def native(file_name):
 
 class BothHosts(unittest.TestCase):
     def test_the_programs_list_the_specs(self):
-        self.assertEqual(typedef_specs(), ["frame_data.json", "surface_modes.json"])
+        self.assertEqual(typedef_specs(), ["frame_data.json", "material_data.json", "surface_modes.json"])
 
     def test_same_glsl(self):
         for name in typedef_specs():
@@ -60,10 +60,15 @@ class FrameData(unittest.TestCase):
         self.assertEqual(self.block.members["eye"], (32, 1, 4))
         self.assertEqual(self.block.members["light_color"], (52, 16, 4))
         # The shadows' members follow the lights' (docs/shadows.md): 16 light_shadow, 16
-        # shadow_split, shadow_map, frame_pixel, then 32 matrices.
+        # shadow_split, shadow_map, frame_pixel; the world image's (environment.glsl): env,
+        # 8 env_level, env_irradiance, env_rotation, and the background's clip_to_world; then
+        # the 32 shadow matrices.
         self.assertEqual(self.block.members["light_shadow"], (308, 16, 4))
-        self.assertEqual(self.block.members["shadow_matrix"], (444, 32, 16))
-        self.assertEqual(self.block.size, 956)
+        self.assertEqual(self.block.members["env"], (444, 1, 4))
+        self.assertEqual(self.block.members["env_level"], (448, 8, 4))
+        self.assertEqual(self.block.members["clip_to_world"], (500, 1, 16))
+        self.assertEqual(self.block.members["shadow_matrix"], (516, 32, 16))
+        self.assertEqual(self.block.size, 1028)
 
     def test_pack_places_values_and_refuses_what_does_not_fit(self):
         data = self.block.pack({"camera": (2.0, 3.0, 0.0, 0.0), "light_position": [(1, 2, 3, 0), (4, 5, 6, 0)]})

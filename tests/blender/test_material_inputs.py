@@ -42,7 +42,7 @@ class MaterialInputs(unittest.TestCase):
         assign(mat)
         self.assertEqual(warnings(helpers.render(), "does not draw"), [])
 
-    def test_emission_and_an_image_through_a_node_said_once_per_material(self):
+    def test_emission_drawn_and_an_image_through_a_node_said_once_per_material(self):
         scene()
         mat = zoo.material("Painted", (0.5, 0.4, 0.3))
         mat.use_nodes = True
@@ -56,23 +56,26 @@ class MaterialInputs(unittest.TestCase):
         emission.default_value = (1.0, 0.5, 0.0, 1.0)
         node.inputs["Emission Strength"].default_value = 5.0
         assign(mat, copies=2)  # two objects, one material: one line
-        lines = warnings(helpers.render(), "material 'Painted'")
-        self.assertEqual(len(lines), 1, lines)
-        # The image straight into Base Color is drawn (test_textures.py): only the emission is said.
-        self.assertNotIn("Base Color from", lines[0])
-        self.assertIn("Emission (colour (1, 0.5, 0), strength 5)", lines[0])
-        unread = self.inputs().unread_inputs(node)
-        self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Emission")
+        # The image straight into Base Color (test_textures.py) and the emission's values
+        # (test_emission.py) are drawn: nothing is said of them (the boxes have no UV map, and
+        # that is said).
+        self.assertEqual(warnings(helpers.render(), "does not draw"), [])
+        self.assertEqual(self.inputs().unread_inputs(node), [])
         # Through a node EdgeLight does not evaluate, the image is not drawn, and that is said.
         gamma = tree.nodes.new("ShaderNodeGamma")
         tree.links.new(tex.outputs["Color"], gamma.inputs["Color"])
         tree.links.new(gamma.outputs["Color"], node.inputs["Base Color"])
-        lines = warnings(helpers.render(), "material 'Painted'")
+        # So is an image into the emission's strength: its value is drawn.
+        mask = tree.nodes.new("ShaderNodeTexImage")
+        mask.label = "Mask"
+        tree.links.new(mask.outputs["Alpha"], node.inputs["Emission Strength"])
+        lines = warnings(helpers.render(), "material 'Painted': EdgeLight does not draw")
         self.assertEqual(len(lines), 1, lines)
         self.assertIn("Base Color from Gamma", lines[0])
         self.assertIn("its value (0.5, 0.4, 0.3) is drawn", lines[0])
+        self.assertIn("Emission Strength from Image Texture 'Mask' (its value 5 is drawn)", lines[0])
         unread = self.inputs().unread_inputs(node)
-        self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Base Color: Gamma, Emission")
+        self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Base Color: Gamma, Emission Strength: Image Texture")
 
     def test_other_surface_shader_is_named_and_the_render_goes_on(self):
         scene()
@@ -109,7 +112,7 @@ class MaterialInputs(unittest.TestCase):
         tree.links.new(env.outputs["Color"], background.inputs["Color"])
         lines = warnings(helpers.render(), f"world '{world.name}'")
         self.assertEqual(len(lines), 1)
-        self.assertIn("its Color comes from Environment Texture", lines[0])
+        self.assertIn("its Color comes from Environment Texture, which has no image", lines[0])
 
 
 if __name__ == "__main__":

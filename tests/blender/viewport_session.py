@@ -559,6 +559,35 @@ def steps():
     tree.nodes.remove(tex)
     yield 0.5
 
+    # 9d. An Environment Texture in the world (world_light.py): the viewport reads the world again
+    # and shows its image behind the objects and in their light; taken out, the world's colour
+    # is back.
+    world = bpy.context.scene.world
+    world.use_nodes = True
+    wtree = world.node_tree
+    background = next(n for n in wtree.nodes if n.type == 'BACKGROUND')
+    green = bpy.data.images.new("GreenSky", 64, 32, float_buffer=True)
+    green.pixels.foreach_set(np.tile(np.float32([0.05, 0.8, 0.1, 1.0]), 64 * 32))
+    before_env, _ = screenshot("before_environment")
+    env = wtree.nodes.new('ShaderNodeTexEnvironment')
+    env.image = green
+    wtree.links.new(env.outputs["Color"], background.inputs["Color"])
+    yield 0.5
+    redraw()
+    yield 0.5
+    after_env, path = screenshot("environment")
+    greenish = lambda img: int(((img[..., 1] > 0.3) & (img[..., 1] > 2.0 * img[..., 0])).sum())  # noqa: E731
+    check("environment texture: the viewport shows the world's image",
+          greenish(after_env) > greenish(before_env) + 20000,
+          f"{path}: green pixels {greenish(before_env)} -> {greenish(after_env)}")
+    wtree.nodes.remove(env)
+    yield 0.5
+    redraw()
+    yield 0.5
+    gone, path = screenshot("environment_removed")
+    check("environment texture: taken out, the world's colour is back",
+          greenish(gone) < greenish(before_env) + 200, f"{path}: green pixels {greenish(gone)}")
+
     # 10. A final render started from the UI as an artist would (a render job with its own GPU
     # context, not -b).
     import edgelight

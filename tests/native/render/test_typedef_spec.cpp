@@ -35,7 +35,7 @@ TEST_F(TypedefSpec, FrameDataLayoutIsTheCompilers) {
     block_param(program.id(), b, GL_UNIFORM_BLOCK_DATA_SIZE, &bytes);
     EXPECT_EQ(size_t(bytes), 4 * block.size());
 
-    ASSERT_EQ(block.members().size(), 16u);  // the lights, then the shadows (docs/shadows.md)
+    ASSERT_EQ(block.members().size(), 21u);  // the lights, the world's image, then the shadows (docs/shadows.md)
     for (const auto& [name, m] : block.members()) {
         // std140 blocks keep every member active, read or not.
         const std::string gl_name = "frame." + name + (m.count > 1 ? "[0]" : "");

@@ -1,0 +1,27 @@
+"""The MaterialData uniform block of a material slot (shaders/material_data.json): what does not
+fit the push constants, packed by member name. One buffer per distinct value, kept while the
+add-on is loaded (a scene has few distinct materials): a draw binds it, nothing is uploaded per
+frame."""
+import gpu
+
+from . import shader_specs
+
+MATERIAL_DATA = shader_specs.Block("material_data.json")
+_buffers = {}
+
+
+def values(shading):
+    """The block's members of a materials.Shading."""
+    return {"emission": (*shading.emission, 0.0)}
+
+
+def buffer(shading):
+    """The GPUUniformBuf of a slot's MaterialData."""
+    data = MATERIAL_DATA.pack(values(shading))
+    key = data.tobytes()
+    ubo = _buffers.get(key)
+    if ubo is None:
+        if len(_buffers) >= 1024:
+            _buffers.clear()
+        ubo = _buffers[key] = gpu.types.GPUUniformBuf(gpu.types.Buffer('FLOAT', data.size, data))
+    return ubo
