@@ -18,9 +18,9 @@ import numpy as np
 # (width, height) of each specular level past the first, and its GGX roughness: a level's texels
 # are about a quarter of its lobe's width (alpha = roughness^2), so the filter samples the lobe
 # well. Level 0 (a mirror, and the background) is the image at its own width, within
-# TOP_WIDTH.
+# TOP_WIDTH: a small image is not enlarged (the lookup blends its texels, as EEVEE's does).
 SPECULAR_LEVELS = ((512, 256), (128, 64), (64, 32), (32, 16), (32, 16))
-TOP_WIDTH = (512, 2048)
+TOP_WIDTH = (16, 2048)
 ROUGHNESS = tuple(k / (len(SPECULAR_LEVELS) - 1) for k in range(len(SPECULAR_LEVELS)))
 IRRADIANCE = (32, 16)
 # The resolution each filtered tile is computed on (box-filtered from level 0), then box-filtered
@@ -112,15 +112,16 @@ def prefilter(rgb):
     rgb = np.asarray(rgb, np.float32)
     top = int(np.clip(rgb.shape[1], *TOP_WIDTH))
     base = resample(rgb, top, top // 2)
+    src = base if top >= _SOURCE[0][0] else rgb  # the filtered levels from the finer of the two
     tiles = [base]
     for (w, h), (ws, hs), r in zip(SPECULAR_LEVELS[1:], _SOURCE, ROUGHNESS[1:]):
-        tiles.append(resample(_convolve(resample(base, ws, hs), ggx_weight(r)), w, h))
-    irr = resample(_convolve(resample(base, *_IRRADIANCE_SOURCE), cosine_weight), *IRRADIANCE)
+        tiles.append(resample(_convolve(resample(src, ws, hs), ggx_weight(r)), w, h))
+    irr = resample(_convolve(resample(src, *_IRRADIANCE_SOURCE), cosine_weight), *IRRADIANCE)
     # Layout: level 0 across the top band; the others, then the irradiance, side by side below.
-    width = top
+    width = max(top, sum(w for w, _h in SPECULAR_LEVELS[1:]) + IRRADIANCE[0])
     row_h = max(h for _w, h in SPECULAR_LEVELS[1:] + (IRRADIANCE,))
     y0 = top // 2
-    atlas = np.zeros((y0 + row_h, width, 4), np.float32)
+    atlas = np.zeros((y0 + row_h, width, 4), np.float32)  # the corner right of a small level 0: unused
     atlas[..., 3] = 1.0
     rects = [(0, 0, top, top // 2)]
     x = 0

@@ -11,8 +11,10 @@ from .passes import shader_specs
 
 # Principled BSDF inputs EdgeLight reads as values (materials.shading_of); a link into one is
 # not followed: its socket's own value is drawn. Names of 3.4 and of 4.0+ (renamed sockets).
-READ = ("Base Color", "Metallic", "Roughness", "Specular", "Specular IOR Level", "Alpha", "Emission", "Emission Color",
-        "Emission Strength")
+READ = ("Base Color", "Metallic", "Roughness", "Specular", "Specular IOR Level", "Alpha")
+# The emission's sockets (3.4's and 4.0+'s names): their values are drawn (materials.emission_of);
+# a link into either means a glow EdgeLight cannot place, so none is drawn, and that is said.
+EMISSION = ("Emission", "Emission Color", "Emission Strength")
 # Inputs an Image Texture may feed (image_input): drawn, so not said.
 TEXTURED = ("Base Color",)
 # Inputs that change the look when linked, though EdgeLight uses the mesh's normals.
@@ -167,14 +169,16 @@ def principled_of(material):
 def unread_inputs(node):
     """[(short, long)] of what the Principled BSDF `node` sets that EdgeLight does not draw."""
     out = []
-    for name in READ + LINKED_IGNORED:
+    for name in READ + EMISSION + LINKED_IGNORED:
         socket = node.inputs.get(name)
         source = _from_node(socket) if socket is not None else None
         if source is None:
             continue
         if name in TEXTURED and image_input(socket) is not None:
             continue  # drawn (surface.frag.glsl's EL_BASE_TEXTURE)
-        if name in READ:
+        if name in EMISSION:
+            out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)} (no emission is drawn)"))
+        elif name in READ:
             out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)} (its value {_value(socket)} is drawn)"))
         else:
             out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)}"))

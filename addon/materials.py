@@ -165,7 +165,11 @@ def shading_of(material):
 
 def emission_of(node):
     """A Principled BSDF's emitted radiance: its Emission colour (3.4: Emission; 4.0+: Emission
-    Color) x Emission Strength, the sockets' values (a link into them is said: material_inputs)."""
+    Color) x Emission Strength, the sockets' values; none where either is linked (4.0's unlinked
+    colour is white: a texture's glow would be a white one), which material_inputs says."""
+    sockets = [node.inputs.get(n) for n in material_inputs.EMISSION]
+    if any(s is not None and s.is_linked for s in sockets):
+        return (0.0, 0.0, 0.0)
     color = _input(node, "Emission Color", "Emission")
     strength = _float(node, 1.0, "Emission Strength")
     if color is None or not math.isfinite(strength):

@@ -66,6 +66,7 @@ class ViewportState:
         self.ambient = (0.0, 0.0, 0.0)
         self.environment = None
         self.world = None  # world_light.WorldLight, read again when the world may have changed
+        self.world_pointer = 0
         self.reports = []              # what the status bar says: the notes below, once each
         self.status_text = ""          # what it last said (the viewport tests read it)
         self.notes = {}                # geometry key -> its extraction's notes (or why it was skipped)
@@ -89,12 +90,15 @@ class ViewportState:
         """`space`: the 3D view (its local view hides what is not in it)."""
         self.counters.updates += 1
         geometry, shading = set(), False
-        # The world is read again when it, an image or the scene (which world it has) changed:
-        # reading an Environment Texture's image costs its pixels.
-        world_stale = self.world is None
+        # The world is read again when it (its node tree included), its image or which world the
+        # scene has changed: reading an Environment Texture's image costs all its pixels.
+        world = depsgraph.scene.world
+        world_stale = self.world is None or self.world_pointer != (world.as_pointer() if world else 0)
+        env_image = self.world.environment.key[1] if self.world is not None and self.world.environment else None
         for update in depsgraph.updates:
             idb = update.id
-            world_stale = world_stale or isinstance(idb, (bpy.types.World, bpy.types.Image, bpy.types.Scene))
+            world_stale = world_stale or isinstance(idb, bpy.types.World) or (
+                isinstance(idb, bpy.types.Image) and idb.name_full == env_image)
             if isinstance(idb, bpy.types.Object) and update.is_updated_geometry:
                 geometry.add(idb.name)
             elif isinstance(idb, bpy.types.Material) or (isinstance(idb, bpy.types.Object) and update.is_updated_shading):
@@ -141,6 +145,7 @@ class ViewportState:
             self.scene_notes.append(f"{len(lights)} lights; the {frame_data.MAX_LIGHTS} first are used")
         if world_stale:
             self.world = world_light.read(depsgraph.scene.world)
+            self.world_pointer = depsgraph.scene.world.as_pointer() if depsgraph.scene.world else 0
         world = self.world
         if world.note:
             self.scene_notes.append(world.note)
@@ -341,7 +346,7 @@ def scene_signature(state, scene):
             state.line_settings,
             tuple((lt.kind, lt.color, lt.position, lt.direction, lt.spot_cos, lt.spot_blend, lt.shadow, lt.radius)
                   for lt in state.lights),
-            state.ambient, state.environment and state.environment.key, s.viewport_samples, s.highlights, scene.render.film_transparent,
+            state.ambient, state.environment and state.environment.signature(), s.viewport_samples, s.highlights, scene.render.film_transparent,
             shadow_plan.settings_of(s))
 
 

@@ -28,6 +28,10 @@ class Environment:
     rotation: np.ndarray  # 3x3: world direction -> the image's direction (before normalising)
     key: tuple            # what the atlas was filtered from: its GPU texture is kept by it
 
+    def signature(self):
+        """Everything of it that the image on screen depends on."""
+        return (self.key, self.strength, self.rotation.tobytes())
+
 
 @dataclass(frozen=True)
 class WorldLight:
@@ -95,19 +99,38 @@ def _environment(node, strength):
     return Environment(atlas, strength, rotation, key), said
 
 
+def _from_socket(socket):
+    """The output socket feeding a linked socket, through reroutes; None when unlinked."""
+    while socket is not None and socket.is_linked:
+        link = socket.links[0]
+        if link.from_node.type != 'REROUTE':
+            return link.from_socket
+        socket = link.from_node.inputs[0]
+    return None
+
+
+def _generated(socket):
+    """Whether a linked socket reads a Texture Coordinate's Generated: the world's view direction."""
+    out = _from_socket(socket)
+    return out is not None and out.node.type == 'TEX_COORD' and out.name == "Generated"
+
+
 def _mapping(vector):
     """(3x3 world -> image direction, "" or what is not read) of the texture's Vector input."""
     source = _from_node(vector)
-    if source is None:
-        return np.eye(3), ""
-    if source.type == 'TEX_COORD' and vector.links[0].from_socket.name == "Generated":
+    if source is None or _generated(vector):
         return np.eye(3), ""
     if source.type != 'MAPPING':
         return np.eye(3), f"its Vector comes from {_describe(source)}, which EdgeLight does not read"
     into = _from_node(source.inputs["Vector"])
     why = ""
-    if into is not None and not (into.type == 'TEX_COORD' and source.inputs["Vector"].links[0].from_socket.name == "Generated"):
+    if into is None:
+        why = f"{_describe(source)}'s Vector is not linked (a constant), which EdgeLight reads as the view direction"
+    elif not _generated(source.inputs["Vector"]):
         why = f"{_describe(source)}'s Vector comes from {_describe(into)}, which EdgeLight does not read"
+    location = source.inputs["Location"].default_value if "Location" in source.inputs else (0.0, 0.0, 0.0)
+    if source.vector_type in {'POINT', 'TEXTURE'} and any(abs(float(v)) > 0.0 for v in location[:3]):
+        why = "; ".join(w for w in (why, f"{_describe(source)}'s Location is not used (a direction has none)") if w)
     rot = _euler_xyz(source.inputs["Rotation"].default_value) if "Rotation" in source.inputs else np.eye(3)
     scale = np.array(source.inputs["Scale"].default_value[:3], np.float64) if "Scale" in source.inputs else np.ones(3)
     kind = source.vector_type
@@ -144,8 +167,10 @@ def _atlas(image):
         if textures.is_srgb_bytes(image):
             textures.linearise_bytes(px)
         rgb = px[..., :3] if c >= 3 else np.repeat(px[..., :1], 3, axis=2)
-        # An HDRI's NaN or negative texels would spread through every filtered tile.
-        rgb = np.nan_to_num(rgb, nan=0.0, posinf=6.0e4, neginf=0.0).clip(0.0, 6.0e4)
+        # An HDRI's NaN, infinite or negative texels would spread through every filtered tile;
+        # cleaned in place (px is this read's own copy), bright suns kept as they are.
+        rgb[~np.isfinite(rgb)] = 0.0
+        np.maximum(rgb, 0.0, out=rgb)
         if len(_atlases) >= 4:
             _atlases.clear()
         _atlases[key] = environment_filter.prefilter(rgb)

@@ -34,19 +34,19 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
   /* Under an image the world differs along the arc: its irradiance and prefiltered radiance
    * at 8 Gauss points of the visible part, weighted as the arc's means are, by projected
    * width N.V (docs/highlight_math.md, "The world's environment on the arc"). */
-  vec3 diff = vec3(0.0), refl = vec3(0.0);
+  vec3 env_diff = vec3(0.0), env_refl = vec3(0.0);
   float wsum = 0.0;
   float mid = 0.5 * (g.vis.lo + g.vis.hi), half_len = 0.5 * max(g.vis.hi - g.vis.lo, 0.0);
   for (int j = 0; j < 8; j++) {
     float t = mid + half_len * ((j & 1) == 0 ? el_gl_x[j >> 1] : -el_gl_x[j >> 1]);
     vec3 N = g.a1 * cos(t) + g.b1 * sin(t);
-    float w = el_gl_w[j >> 1] * max(dot(N, V), 0.0);
-    diff += w * el_world_diffuse(N);
-    refl += w * el_world_specular(reflect(-V, N), n);
+    /* A floor on N.V: a window shrunk to a point on the horizon still has its mean. */
+    float w = el_gl_w[j >> 1] * max(dot(N, V), 1e-6);
+    env_diff += w * el_world_diffuse(N);
+    env_refl += w * el_world_specular(reflect(-V, N), n);
     wsum += w;
   }
-  wsum = max(wsum, 1e-30);
-  vec3 col = el_albedo() * (diff / wsum) + tint.rgb * (refl / wsum) * el_env_specular(el_f0(), n, nv);
+  vec3 col = el_albedo() * (env_diff / wsum) + tint.rgb * (env_refl / wsum) * el_env_specular(el_f0(), n, nv);
 #else
   vec3 col = frame.ambient.rgb * (el_albedo() + tint.rgb * el_env_specular(el_f0(), n, nv));
 #endif

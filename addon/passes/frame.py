@@ -72,7 +72,8 @@ def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=
         shadow_maps = shadow_pass.draw(shadows, scene, gpu_meshes, targets.shadow_maps)
     else:
         targets.shadow_maps.release()  # Shadows off: the viewport's atlas goes
-    lighting = LightingInputs(shadow_maps, targets.environment.texture_of(None if unlit else scene.environment))
+    # Unlit (whiteout), nothing reads the world's image; its texture is kept for the next frame.
+    lighting = LightingInputs(shadow_maps, None if unlit else targets.environment.texture_of(scene.environment))
     if shadows and shadows.left_out and scene.reports is not None:
         scene.reports.append(f"{shadows.left_out} light{'s' if shadows.left_out != 1 else ''} cast no shadow: "
                              f"the lights before took all {settings.shadows.max_layers} shadow layers")

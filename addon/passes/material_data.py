@@ -16,12 +16,13 @@ def values(shading):
 
 
 def buffer(shading):
-    """The GPUUniformBuf of a slot's MaterialData."""
-    data = MATERIAL_DATA.pack(values(shading))
-    key = data.tobytes()
+    """The GPUUniformBuf of a slot's MaterialData (found by the values it holds: a draw per
+    instance and sample asks, so no packing before the lookup)."""
+    key = tuple(values(shading).items())
     ubo = _buffers.get(key)
     if ubo is None:
         if len(_buffers) >= 1024:
             _buffers.clear()
+        data = MATERIAL_DATA.pack(values(shading))
         ubo = _buffers[key] = gpu.types.GPUUniformBuf(gpu.types.Buffer('FLOAT', data.size, data))
     return ubo

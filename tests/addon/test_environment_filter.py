@@ -87,7 +87,9 @@ class EnvironmentFilter(unittest.TestCase):
         self.assertLess(d[2, 6, 1], 0.0, "u = 13/16 points to -Y")
 
     def test_level_zero_keeps_the_image_within_its_width(self):
-        self.assertEqual(ef.prefilter(np.ones((64, 128, 3), np.float32)).levels[0], (0, 0, 512, 256))
+        small = ef.prefilter(np.ones((64, 128, 3), np.float32))
+        self.assertEqual(small.levels[0], (0, 0, 128, 64))  # not enlarged
+        self.assertEqual(small.pixels.shape, (64 + 64, 288, 4))  # the filtered tiles fit beside it
         self.assertEqual(ef.prefilter(np.ones((1024, 2048, 3), np.float32)).levels[0], (0, 0, 2048, 1024))
         self.assertEqual(ef.prefilter(np.ones((2048, 4096, 3), np.float32)).levels[0], (0, 0, 2048, 1024))
 

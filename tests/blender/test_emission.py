@@ -69,6 +69,23 @@ class Emission(unittest.TestCase):
         off = np.abs(px[inside][:, :3] - np.array(EMISSION) * STRENGTH).max(axis=1)
         self.assertLess(float(off.max()), 1e-3, f"{int((off > 1e-3).sum())} pixels off, up to {off.max():.4f}")
 
+    def test_a_linked_emission_draws_no_glow_and_says_so(self):
+        """4.0's unlinked Emission Color is white: a texture into it must not glow white."""
+        dark_scene(highlights=False)
+        helpers.add_camera((0.0, -6.0, 0.0), (0.0, 0.0, 0.0))
+        bpy.ops.mesh.primitive_plane_add(size=2.0, rotation=(1.5707963, 0.0, 0.0))
+        mat = emissive("Screen")
+        tree = mat.node_tree
+        node = next(n for n in tree.nodes if n.type == 'BSDF_PRINCIPLED')
+        tex = tree.nodes.new("ShaderNodeTexChecker")
+        tree.links.new(tex.outputs["Color"], node.inputs.get("Emission Color") or node.inputs["Emission"])
+        bpy.context.object.data.materials.append(mat)
+        rec = helpers.render()
+        np.testing.assert_allclose(np.asarray(rec["pixels"])[80, 100, :3], 0.0, atol=1e-6)
+        said = [m for _level, m in rec.get("messages", []) if "material 'Screen'" in m]
+        self.assertEqual(len(said), 1, said)
+        self.assertIn("from Checker Texture (no emission is drawn)", said[0])
+
     def test_a_toon_material_glows_over_its_ramp(self):
         dark_scene(highlights=False)
         helpers.add_camera((0.0, -6.0, 0.0), (0.0, 0.0, 0.0))

@@ -65,7 +65,7 @@ class MaterialInputs(unittest.TestCase):
         gamma = tree.nodes.new("ShaderNodeGamma")
         tree.links.new(tex.outputs["Color"], gamma.inputs["Color"])
         tree.links.new(gamma.outputs["Color"], node.inputs["Base Color"])
-        # So is an image into the emission's strength: its value is drawn.
+        # So is an image into the emission's strength: no emission is drawn then.
         mask = tree.nodes.new("ShaderNodeTexImage")
         mask.label = "Mask"
         tree.links.new(mask.outputs["Alpha"], node.inputs["Emission Strength"])
@@ -73,7 +73,7 @@ class MaterialInputs(unittest.TestCase):
         self.assertEqual(len(lines), 1, lines)
         self.assertIn("Base Color from Gamma", lines[0])
         self.assertIn("its value (0.5, 0.4, 0.3) is drawn", lines[0])
-        self.assertIn("Emission Strength from Image Texture 'Mask' (its value 5 is drawn)", lines[0])
+        self.assertIn("Emission Strength from Image Texture 'Mask' (no emission is drawn)", lines[0])
         unread = self.inputs().unread_inputs(node)
         self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Base Color: Gamma, Emission Strength: Image Texture")
 

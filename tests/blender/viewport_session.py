@@ -580,7 +580,31 @@ def steps():
     check("environment texture: the viewport shows the world's image",
           greenish(after_env) > greenish(before_env) + 20000,
           f"{path}: green pixels {greenish(before_env)} -> {greenish(after_env)}")
-    wtree.nodes.remove(env)
+    # Turning it (a Mapping node's rotation) draws again: the image is half green, half red.
+    halves = bpy.data.images.new("HalfSky", 64, 32, float_buffer=True)
+    px = np.tile(np.float32([0.05, 0.8, 0.1, 1.0]), (32, 64, 1))
+    px[:, 32:] = (0.8, 0.05, 0.1, 1.0)
+    halves.pixels.foreach_set(px.reshape(-1))
+    env.image = halves
+    mapping = wtree.nodes.new('ShaderNodeMapping')
+    wtree.links.new(mapping.outputs["Vector"], env.inputs["Vector"])
+    coords = wtree.nodes.new('ShaderNodeTexCoord')
+    wtree.links.new(coords.outputs["Generated"], mapping.inputs["Vector"])
+    yield 0.5
+    redraw()
+    yield 0.5
+    before_turn, _ = screenshot("environment_halves")
+    mapping.inputs["Rotation"].default_value = (0.0, 0.0, 3.14159265)
+    yield 0.5
+    redraw()
+    yield 0.5
+    turned, path = screenshot("environment_turned")
+    reddish_sky = lambda img: int(((img[..., 0] > 0.3) & (img[..., 0] > 2.0 * img[..., 1])).sum())  # noqa: E731
+    check("environment texture: turning its Mapping node draws it turned",
+          abs(reddish_sky(turned) - reddish_sky(before_turn)) > 20000,
+          f"{path}: red pixels {reddish_sky(before_turn)} -> {reddish_sky(turned)}")
+    for node in (env, mapping, coords):
+        wtree.nodes.remove(node)
     yield 0.5
     redraw()
     yield 0.5
