@@ -7,6 +7,12 @@ environment"): one RGBA32F atlas of equirectangular tiles that shaders/environme
 - The irradiance tile: E(n) / pi, the cosine-weighted mean radiance, which a Lambertian albedo
   scales into outgoing radiance.
 
+Level 0 keeps the image's texels (rows at their centres). The filtered tiles hold values at
+directions whose rows run from pole to pole, both included (tile_directions): the value at a
+pole is one direction's, the same in every column, so a floor's normal, pointing exactly there,
+reads it (with rows at texel centres, the last row is 5 degrees short of the pole and differs
+by azimuth, and a floor read one azimuth's value: 19 % too bright under Blender's courtyard).
+
 Directions follow Blender's Environment Texture (equirectangular): u = 1/2 - atan2(y, x) / 2pi,
 v = 1/2 + asin(z) / pi, row 0 at v = 0 (Blender's pixels start at the bottom row). A uniform
 image gives its own value in every tile, so a plain world colour and an image of that colour
@@ -48,6 +54,17 @@ def directions(w, h):
                                         np.sin(el)[:, None]), axis=-1)
 
 
+def tile_directions(w, h):
+    """(h, w, 3) unit directions of a filtered tile: columns at their centres, rows from the
+    south pole (row 0) to the north pole (row h - 1), both included."""
+    u = (np.arange(w) + 0.5) / w
+    phi = (0.5 - u) * 2.0 * np.pi
+    el = (np.arange(h) / (h - 1) - 0.5) * np.pi
+    ce = np.cos(el)[:, None]
+    return np.stack(np.broadcast_arrays(ce * np.cos(phi)[None, :], ce * np.sin(phi)[None, :],
+                                        np.sin(el)[:, None]), axis=-1)
+
+
 def solid_angles(w, h):
     """(h,) solid angle of one texel in each row: 2pi / w times the row's band of sin(elevation)."""
     edges = np.sin((np.arange(h + 1) / h - 0.5) * np.pi)
@@ -73,21 +90,32 @@ def resample(px, w, h):
     return cols[np.arange(h) * hi // h].astype(np.float32)
 
 
-def _convolve(src, weight):
-    """(h, w, 3) filtered image on the source's own grid: per output direction r, the sum of
-    L(l) weight(r.l) dw over the source's texels l, over the sum of weight(r.l) dw (normalised:
-    a uniform source gives itself). The weight depends on r's row, l's row and their azimuths'
-    difference only, so each pair of rows is a circular convolution along the row: one FFT."""
+def _convolve(src, weight, out_rows):
+    """(out_rows, w, 3) filtered image, the source's columns and rows from pole to pole
+    (tile_directions): per output direction r, the sum of L(l) weight(r.l) dw over the source's
+    texels l, over the sum of weight(r.l) dw (normalised: a uniform source gives itself). The
+    weight depends on r's row, l's row and their azimuths' difference only, so each pair of rows
+    is a circular convolution along the row: one FFT."""
     h, w = src.shape[:2]
-    el = ((np.arange(h) + 0.5) / h - 0.5) * np.pi
+    el_in = ((np.arange(h) + 0.5) / h - 0.5) * np.pi
+    el = (np.arange(out_rows) / (out_rows - 1) - 0.5) * np.pi
     dphi = np.arange(w) * (2.0 * np.pi / w)
-    cos_t = (np.sin(el)[:, None, None] * np.sin(el)[None, :, None]
-             + np.cos(el)[:, None, None] * np.cos(el)[None, :, None] * np.cos(dphi)[None, None, :])
+    cos_t = (np.sin(el)[:, None, None] * np.sin(el_in)[None, :, None]
+             + np.cos(el)[:, None, None] * np.cos(el_in)[None, :, None] * np.cos(dphi)[None, None, :])
     k = weight(cos_t) * solid_angles(w, h)[None, :, None]  # (out row, source row, azimuth step)
     k_hat = np.fft.rfft(k, axis=2)
     l_hat = np.fft.rfft(src.astype(np.float64), axis=1)  # (source row, frequency, rgb)
     out = np.fft.irfft(np.einsum("oif,ifc->ofc", k_hat, l_hat), n=w, axis=1)
     return out / np.maximum(k.sum(axis=(1, 2)), 1e-300)[:, None, None]
+
+
+def _columns(tile, w):
+    """A filtered tile box-filtered along its rows to w columns (its rows stay: they are
+    directions, the poles among them)."""
+    ws = tile.shape[1]
+    starts = np.arange(w) * ws // w
+    out = np.add.reduceat(tile, starts, axis=1) / np.diff(np.append(starts, ws))[None, :, None]
+    return out.astype(np.float32)
 
 
 def ggx_weight(roughness):
@@ -115,8 +143,8 @@ def prefilter(rgb):
     src = base if top >= _SOURCE[0][0] else rgb  # the filtered levels from the finer of the two
     tiles = [base]
     for (w, h), (ws, hs), r in zip(SPECULAR_LEVELS[1:], _SOURCE, ROUGHNESS[1:]):
-        tiles.append(resample(_convolve(resample(src, ws, hs), ggx_weight(r)), w, h))
-    irr = resample(_convolve(resample(src, *_IRRADIANCE_SOURCE), cosine_weight), *IRRADIANCE)
+        tiles.append(_columns(_convolve(resample(src, ws, hs), ggx_weight(r), h), w))
+    irr = _columns(_convolve(resample(src, *_IRRADIANCE_SOURCE), cosine_weight, IRRADIANCE[1]), IRRADIANCE[0])
     # Layout: level 0 across the top band; the others, then the irradiance, side by side below.
     width = max(top, sum(w for w, _h in SPECULAR_LEVELS[1:]) + IRRADIANCE[0])
     row_h = max(h for _w, h in SPECULAR_LEVELS[1:] + (IRRADIANCE,))

@@ -6,19 +6,25 @@
  * v stops at the poles. Without EL_ENVIRONMENT every lookup is frame.ambient, as before. */
 #ifdef EL_ENVIRONMENT
 /* Blender's equirectangular mapping of the image's direction d: u = 1/2 - atan2(y, x) / 2pi,
- * v = 1/2 + asin(z) / pi (atan2 of the horizontal length: no asin past 1). */
+ * v = 1/2 + asin(z) / pi (atan2 of the horizontal length: no asin past 1). atan(0, 0) is
+ * undefined in GLSL, and a floor's normal points exactly at the pole: there every u is the
+ * same texel row, so u = 1/2. */
 vec2 el_env_uv(vec3 world_dir)
 {
   vec3 d = mat3(frame.env_rotation) * world_dir;
-  return vec2(0.5 - atan(d.y, d.x) * (0.5 / 3.14159265),
-              0.5 + atan(d.z, length(d.xy)) * (1.0 / 3.14159265));
+  float r = length(d.xy);
+  float az = r > 0.0 ? atan(d.y, d.x) : 0.0;
+  float el = (r > 0.0 || d.z != 0.0) ? atan(d.z, r) : 0.0;
+  return vec2(0.5 - az * (0.5 / 3.14159265), 0.5 + el * (1.0 / 3.14159265));
 }
 
-/* Bilinear radiance of tile r (x, y, w, h) at uv. */
-vec3 el_env_tile(vec4 r, vec2 uv)
+/* Bilinear radiance of tile r (x, y, w, h) at uv. Level 0's rows are the image's, at their
+ * centres; a filtered tile's (`poles`) run from pole to pole, both included
+ * (environment_filter.tile_directions). */
+vec3 el_env_tile(vec4 r, vec2 uv, bool poles)
 {
   ivec2 size = ivec2(r.zw + 0.5), o = ivec2(r.xy + 0.5);
-  vec2 p = uv * r.zw - 0.5;
+  vec2 p = vec2(uv.x * r.z - 0.5, poles ? uv.y * (r.w - 1.0) : uv.y * r.w - 0.5);
   ivec2 b = ivec2(floor(p));
   vec2 f = p - floor(p);
   int x0 = b.x - size.x * int(floor(float(b.x) / float(size.x)));
@@ -40,7 +46,7 @@ float el_env_roughness(float n)
 vec3 el_world_background(vec3 dir)
 {
 #ifdef EL_ENVIRONMENT
-  return el_env_tile(frame.env_level[0], el_env_uv(dir));
+  return el_env_tile(frame.env_level[0], el_env_uv(dir), false);
 #else
   return frame.ambient.rgb;
 #endif
@@ -50,7 +56,7 @@ vec3 el_world_background(vec3 dir)
 vec3 el_world_diffuse(vec3 N)
 {
 #ifdef EL_ENVIRONMENT
-  return el_env_tile(frame.env_irradiance, el_env_uv(N));
+  return el_env_tile(frame.env_irradiance, el_env_uv(N), true);
 #else
   return frame.ambient.rgb;
 #endif
@@ -65,7 +71,7 @@ vec3 el_world_specular(vec3 R, float n)
   float at = clamp(el_env_roughness(n), 0.0, 1.0) * last;
   int k = int(min(floor(at), last - 1.0));
   vec2 uv = el_env_uv(R);
-  return mix(el_env_tile(frame.env_level[k], uv), el_env_tile(frame.env_level[k + 1], uv), at - float(k));
+  return mix(el_env_tile(frame.env_level[k], uv, k > 0), el_env_tile(frame.env_level[k + 1], uv, true), at - float(k));
 #else
   return frame.ambient.rgb;
 #endif

@@ -29,7 +29,7 @@ class EnvironmentFilter(unittest.TestCase):
         d = ef.directions(1024, 512)
         atlas = ef.prefilter(np.repeat((d[..., 2:3] > 0.0).astype(np.float32), 3, axis=2))
         irr = tile(atlas, atlas.irradiance)[..., 0]
-        n = ef.directions(*atlas.irradiance[2:])
+        n = ef.tile_directions(*atlas.irradiance[2:])
         # Measured: within 1.3e-3 (the 64 x 32 grid the convolution runs on).
         np.testing.assert_allclose(irr, (1.0 + n[..., 2]) / 2.0, atol=2e-3)
         self.assertAlmostEqual(atlas.mean[0], 0.5, places=6)
@@ -38,7 +38,7 @@ class EnvironmentFilter(unittest.TestCase):
         """Radiance 1 + z (non-negative, as world_light.py hands it in)."""
         d = ef.directions(1024, 512)
         atlas = ef.prefilter(np.repeat(1.0 + d[..., 2:3], 3, axis=2).astype(np.float32))
-        n = ef.directions(*atlas.irradiance[2:])
+        n = ef.tile_directions(*atlas.irradiance[2:])
         # E / pi of 1 + z: 1 + (2/3) n.z (the integral of l max(n.l, 0) is 2 pi n / 3).
         np.testing.assert_allclose(tile(atlas, atlas.irradiance)[..., 0], 1.0 + 2.0 / 3.0 * n[..., 2], atol=3e-3)
 
@@ -48,24 +48,39 @@ class EnvironmentFilter(unittest.TestCase):
         atlas = ef.prefilter(np.repeat(1.0 + d[..., 2:3], 3, axis=2).astype(np.float32))
         for k, rect in enumerate(atlas.levels[1:], start=1):
             level = tile(atlas, rect)[..., 0] - 1.0
-            z = ef.directions(*rect[2:])[..., 2]
+            z = ef.tile_directions(*rect[2:])[..., 2]
             c = np.sum(level * z) / np.sum(z * z)
             self.assertLess(c, 1.0)
             self.assertGreater(c, 0.3)
             np.testing.assert_allclose(level, c * z, atol=4e-3, err_msg=f"level {k}")
-        cs = [np.sum((tile(atlas, r)[..., 0] - 1.0) * ef.directions(*r[2:])[..., 2]) /
-              np.sum(ef.directions(*r[2:])[..., 2] ** 2) for r in atlas.levels]
+        grid = [ef.directions] + [ef.tile_directions] * (len(atlas.levels) - 1)  # level 0: the image's texels
+        cs = [np.sum((tile(atlas, r)[..., 0] - 1.0) * g(*r[2:])[..., 2]) / np.sum(g(*r[2:])[..., 2] ** 2)
+              for g, r in zip(grid, atlas.levels)]
         self.assertTrue(all(a > b for a, b in zip(cs, cs[1:])), f"rougher levels spread wider: {cs}")
 
     def test_the_fft_is_the_direct_sum(self):
         rng = np.random.default_rng(3)
         src = rng.random((32, 64, 3)).astype(np.float32)
         d = ef.directions(64, 32).reshape(-1, 3)
+        out = ef.tile_directions(64, 17).reshape(-1, 3)
         sa = np.repeat(ef.solid_angles(64, 32), 64)
         for weight in (ef.ggx_weight(0.5), ef.ggx_weight(0.25), ef.cosine_weight):
-            w = weight(d @ d.T) * sa[None, :]
+            w = weight(out @ d.T) * sa[None, :]
             direct = (w @ src.reshape(-1, 3)) / w.sum(axis=1)[:, None]
-            np.testing.assert_allclose(ef._convolve(src, weight).reshape(-1, 3), direct, atol=1e-10)
+            np.testing.assert_allclose(ef._convolve(src, weight, 17).reshape(-1, 3), direct, atol=1e-10)
+
+    def test_the_filtered_tiles_hold_the_poles(self):
+        """A floor's normal points exactly at the pole: the tiles' last row is E / pi there, the
+        same in every column (brute force over the whole image)."""
+        rng = np.random.default_rng(5)
+        src = rng.random((128, 256, 3)).astype(np.float32) * np.linspace(0.2, 2.0, 256)[None, :, None]
+        atlas = ef.prefilter(src)
+        d = ef.directions(256, 128)
+        w = np.maximum(d[..., 2], 0.0) * ef.solid_angles(256, 128)[:, None]
+        up = (src * w[..., None]).sum(axis=(0, 1)) / w.sum()
+        top = tile(atlas, atlas.irradiance)[-1]
+        np.testing.assert_allclose(top, np.broadcast_to(up, top.shape), rtol=5e-3)
+        self.assertLess(float(np.ptp(top, axis=0).max()), 1e-5, "one value in every column")
 
     def test_the_box_filter_keeps_the_mean(self):
         rng = np.random.default_rng(4)
