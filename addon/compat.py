@@ -87,6 +87,16 @@ def uses_nodes(id_block):
     return _ALWAYS_NODES or id_block.use_nodes
 
 
+def alpha_blend(material):
+    """How EEVEE cuts a material by its alpha: ('OPAQUE' | 'CLIP' | 'HASHED' | 'BLEND', the clip
+    threshold). 4.2+ (EEVEE Next) has a render method instead: Dithered is hashed, Blended
+    blended; 3.4's Blend Mode Opaque ignores the alpha."""
+    method = getattr(material, "surface_render_method", None)
+    if method is not None:
+        return ('BLEND' if method == 'BLENDED' else 'HASHED'), 0.5
+    return getattr(material, "blend_method", 'OPAQUE'), float(getattr(material, "alpha_threshold", 0.5))
+
+
 def write_pass(render_pass, pixels):
     """pixels: (h * w, 4) float32. Newer versions take a flat array, 3.4 a 2-D one."""
     try:

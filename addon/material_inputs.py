@@ -78,6 +78,27 @@ def image_input(socket):
     return None
 
 
+def _feeding(socket):
+    """(the node, its output socket) feeding a linked socket, through reroutes; (None, None)."""
+    while socket is not None and socket.is_linked:
+        link = socket.links[0]
+        if link.from_node.type != 'REROUTE':
+            return link.from_node, link.from_socket
+        socket = link.from_node.inputs[0]
+    return None, None
+
+
+def image_alpha(node):
+    """Whether the Principled BSDF `node`'s Alpha comes from the Alpha output of the Image
+    Texture that feeds its Base Color (and is drawn there: image_input), which the surface pass
+    then cuts by (materials.BaseTexture)."""
+    alpha, base = node.inputs.get("Alpha"), node.inputs.get("Base Color")
+    if alpha is None or base is None or image_input(base) is None:
+        return False
+    source, out = _feeding(alpha)
+    return source is not None and out.name == "Alpha" and source == _feeding(base)[0]
+
+
 def _uv_source(vector):
     """The UV map an Image Texture's Vector reads: "" for the active render map; None when it is
     fed by anything but a UV Map node or a Texture Coordinate's UV output."""
@@ -176,6 +197,8 @@ def unread_inputs(node):
             continue
         if name in TEXTURED and image_input(socket) is not None:
             continue  # drawn (surface.frag.glsl's EL_BASE_TEXTURE)
+        if name == "Alpha" and image_alpha(node):
+            continue  # drawn: the image's alpha cuts the surface (EL_TEX_ALPHA)
         if name in EMISSION:
             out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)} (no emission is drawn)"))
         elif name in READ:

@@ -5,7 +5,7 @@ from dataclasses import dataclass, replace
 
 import bpy
 
-from . import color_ramp, material_inputs, textures
+from . import color_ramp, compat, material_inputs, textures
 from . import material_defaults as defaults
 from .passes import shader_specs
 from .properties import K_MAX
@@ -15,6 +15,7 @@ DEFAULT_COLOR = (0.8, 0.8, 0.8)  # Principled BSDF's Base Color
 # The surface program's shading modes (shaders/surface_modes.json), keyed as the material's
 # `shading` setting.
 SURFACE_MODES = shader_specs.enum("surface_modes.json", "EL_SURFACE_MODE")
+ALPHA = shader_specs.enum("surface_modes.json", "EL_ALPHA")
 
 
 @dataclass(frozen=True)
@@ -64,6 +65,8 @@ class BaseTexture:
     source: object         # material_inputs.ImageInput
     metallic: float
     f0: tuple              # the dielectric part of F0: 0.08 specular (1 - metallic)
+    alpha: int = 0         # EL_ALPHA (surface_modes.json): how its alpha, fed into Alpha too, cuts
+    alpha_threshold: float = 0.5  # EL_ALPHA_CLIP's
 
 
 def default_ramp(base):
@@ -157,10 +160,29 @@ def shading_of(material):
     note = "; ".join(n for n in (material_inputs.note(material, unread(material)), note) if n)
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.
-    texture = BaseTexture(image, metallic, (f0 * (1.0 - metallic),) * 3) if image is not None else None
+    alpha_mode, threshold, alpha_note = _alpha_mode(material, node, image)
+    note = "; ".join(n for n in (note, alpha_note) if n)
+    texture = (BaseTexture(image, metallic, (f0 * (1.0 - metallic),) * 3, alpha_mode, threshold)
+               if image is not None else None)
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full,
                    int(material.pass_index), texture, emission)
+
+
+def _alpha_mode(material, node, image):
+    """(EL_ALPHA value, clip threshold, note) of a material whose image feeds its Alpha too:
+    cut as EEVEE cuts it (compat.alpha_blend); Alpha Blend, which EdgeLight does not sort, is
+    drawn hashed, which the samples average to the same coverage, and that is said."""
+    if image is None or node is None or not material_inputs.image_alpha(node):
+        return ALPHA["NONE"], 0.5, ""
+    blend, threshold = compat.alpha_blend(material)
+    if blend == 'OPAQUE':
+        return ALPHA["NONE"], threshold, ""  # EEVEE ignores the alpha too
+    if blend == 'CLIP':
+        return ALPHA["CLIP"], threshold, ""
+    note = (f"material '{material.name}': its blended alpha is drawn hashed (dithered), averaged over the samples"
+            if blend == 'BLEND' else "")
+    return ALPHA["HASHED"], threshold, note
 
 
 def emission_of(node):

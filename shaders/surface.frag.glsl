@@ -43,6 +43,16 @@ void main()
     }
   }
 #endif
+#ifdef EL_BASE_TEXTURE
+#if EL_TEX_ALPHA != EL_ALPHA_NONE
+  /* The image's alpha into the material's Alpha: Alpha Clip cuts below the threshold, Alpha
+   * Hashed (EEVEE Next's Dithered) against el_alpha_hash, which the samples average. */
+  float coverage = el_base_texel(surface_uv).a;
+  if (EL_TEX_ALPHA == EL_ALPHA_CLIP ? coverage < material.alpha_clip.x : coverage <= el_alpha_hash()) {
+    discard;
+  }
+#endif
+#endif
   out_depth = 1.0 / max(view_depth, 1e-30); /* 0 where nothing was drawn: infinitely far */
   /* Seen from its front: the side world_nor points to (outward, a mirrored object's too:
    * el_transform_normal) faces the eye. */

@@ -6,6 +6,18 @@
  * (EL_EXTEND_*, shaders/surface_modes.json). No mipmaps: a minified image aliases, which the
  * jittered samples average. A UV of (0, 0) is the image's first pixel, bottom left. */
 #ifdef EL_BASE_TEXTURE
+#ifndef EL_TEX_ALPHA
+#define EL_TEX_ALPHA EL_ALPHA_NONE
+#endif
+/* An Alpha Hashed surface's threshold at this pixel and sample: interleaved gradient noise over
+ * the whole frame's pixels (a render region's too), moved each sample, so that the jittered
+ * samples average the cut into the alpha's coverage. */
+float el_alpha_hash()
+{
+  vec2 p = floor(gl_FragCoord.xy) + frame.frame_pixel.xy + 5.588238 * frame.camera.z;
+  return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
+}
+
 vec4 el_base_fetch(ivec2 p, ivec2 size)
 {
   if (EL_TEX_EXTEND == EL_EXTEND_REPEAT) {

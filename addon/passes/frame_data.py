@@ -29,7 +29,7 @@ def pack(camera, projection, scene, shadows=None, sample=0):
         "view_dir": (*camera.view_dir, 0.0),
         "viewport": (camera.width, camera.height, 1.0 / camera.width, 1.0 / camera.height),
         "ambient": (*scene.ambient, 1.0),
-        "camera": (camera.px_per_unit, len(lights), 0.0, 0.0),
+        "camera": (camera.px_per_unit, len(lights), float(sample), 0.0),
         "frame_pixel": (*getattr(camera, "pixel_origin", (0, 0)), 0.0, 0.0),
         "light_color": [(*light.color, light.kind) for light in lights],
         "light_position": [(*light.position, 0.0) for light in lights],

@@ -12,7 +12,9 @@ _buffers = {}
 
 def values(shading):
     """The block's members of a materials.Shading."""
-    return {"emission": (*shading.emission, 0.0)}
+    t = shading.texture
+    return {"emission": (*shading.emission, 0.0),
+            "alpha_clip": (t.alpha_threshold if t is not None else 0.5, 0.0, 0.0, 0.0)}
 
 
 def buffer(shading):

@@ -75,14 +75,14 @@ def texture_key(s, mode):
     if s.texture is None or mode != SURFACE_MODES["PHONG"]:
         return None
     source = s.texture.source
-    return (int(source.closest), EXTEND[source.extension])
+    return (int(source.closest), EXTEND[source.extension], int(s.texture.alpha))
 
 
 def texture_defines(key):
     """The defines of the variant drawing an image with texture_key `key` (shaders/textures.glsl)."""
     if key is None:
         return {}
-    return {"EL_BASE_TEXTURE": 1, "EL_TEX_CLOSEST": key[0], "EL_TEX_EXTEND": key[1]}
+    return {"EL_BASE_TEXTURE": 1, "EL_TEX_CLOSEST": key[0], "EL_TEX_EXTEND": key[1], "EL_TEX_ALPHA": key[2]}
 
 
 def textured_uniforms(shader, s):

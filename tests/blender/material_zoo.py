@@ -171,7 +171,7 @@ def alpha_clipped_cards():
         bpy.ops.mesh.primitive_plane_add(size=1.2, location=((k - 1) * 0.9, 0.3 * k, 0.9), rotation=(math.pi / 2, 0.0, 0.3 * k))
         bpy.context.object.data.materials.append(mat)
     _floor(rgb=(0.45, 0.35, 0.25))
-    return Zoo("alpha_cards", "foliage cards: an image's alpha clipped", False, ("Alpha from Image Texture",))
+    return Zoo("alpha_cards", "foliage cards: an image's alpha clipped (dithered on 4.2+)", False, ())
 
 
 def emissive_panel():

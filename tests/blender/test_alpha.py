@@ -1,0 +1,103 @@
+"""An image's alpha into the Principled BSDF's Alpha as well as its colour into Base Color
+(material_inputs.image_alpha, materials.BaseTexture's alpha, surface.frag.glsl): cut as EEVEE
+cuts it. Alpha Clip (3.4's Blend Mode) keeps a texel at or above the threshold and shows the
+world below it; Alpha Hashed (3.4) and Dithered (EEVEE Next, 4.2+) cut against a per-pixel,
+per-sample hash, which the samples average into the alpha's coverage; Blend Mode Opaque (3.4)
+ignores the alpha; Alpha Blend is drawn hashed and says so."""
+import unittest
+
+import bpy
+import numpy as np
+
+import helpers
+import scene_zoo as zoo
+
+SIZE = 64
+WORLD = (0.0, 1.0, 0.0)
+RED = (0.8, 0.1, 0.1)
+
+
+def card(alphas, samples=1):
+    """A 2 x 2 quad filling the frame from above, its image 4 x 1 texels of red at `alphas`
+    (left to right, Closest), the image's colour into Base Color and its alpha into Alpha, under
+    a green world and no light."""
+    scene = helpers.empty_scene(SIZE, SIZE, highlights=False, samples=samples)
+    helpers.set_world_color(scene, WORLD)
+    bpy.ops.mesh.primitive_plane_add(size=2.0)
+    ob = bpy.context.object
+    zoo.top_camera(1.0)
+    img = bpy.data.images.new("Leaf", 4, 1, alpha=True, float_buffer=True)
+    img.pixels.foreach_set(np.array([(*RED, a) for a in alphas], np.float32).reshape(-1))
+    mat = zoo.material("Card", (0.8, 0.8, 0.8))
+    mat.use_nodes = True
+    nodes, links = mat.node_tree.nodes, mat.node_tree.links
+    bsdf = next(n for n in nodes if n.type == 'BSDF_PRINCIPLED')
+    bsdf.inputs["Specular IOR Level" if "Specular IOR Level" in bsdf.inputs else "Specular"].default_value = 0.0
+    tex = nodes.new('ShaderNodeTexImage')
+    tex.image, tex.interpolation = img, 'Closest'
+    links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+    links.new(tex.outputs["Alpha"], bsdf.inputs["Alpha"])
+    ob.data.materials.append(mat)
+    return scene, mat
+
+
+def columns(px):
+    """The mean colour of each quarter of the image, left to right (the texels' columns)."""
+    q = SIZE // 4
+    return [px[4:-4, k * q + 2:(k + 1) * q - 2, :3].reshape(-1, 3).mean(axis=0) for k in range(4)]
+
+
+def messages(rec):
+    return [m for _level, m in rec.get("messages", [])]
+
+
+class ImageAlpha(unittest.TestCase):
+    def setUp(self):
+        helpers.needs_gpu()
+
+    @unittest.skipIf("surface_render_method" in bpy.types.Material.bl_rna.properties,
+                     "EEVEE Next (4.2+) has no Alpha Clip: its render method is Dithered or Blended")
+    def test_alpha_clip_cuts_below_the_threshold(self):
+        scene, mat = card((1.0, 0.6, 0.4, 0.0))
+        mat.blend_method, mat.alpha_threshold = 'CLIP', 0.5
+        cols = columns(np.asarray(helpers.render()["pixels"]))
+        for k, kept in enumerate((True, True, False, False)):
+            if kept:
+                self.assertLess(cols[k][1], 0.5, f"texel {k} kept")
+            else:
+                np.testing.assert_allclose(cols[k], WORLD, atol=1e-4, err_msg=f"texel {k} cut: the world shows")
+        mat.blend_method = 'OPAQUE'  # EEVEE ignores the alpha: every texel drawn
+        cols = columns(np.asarray(helpers.render()["pixels"]))
+        self.assertTrue(all(c[1] < 0.5 for c in cols), cols)
+
+    def test_hashed_alpha_averages_into_coverage(self):
+        """Alpha 1, 0.75, 0.25, 0 over 32 samples: the world shows through by 1 - alpha."""
+        scene, mat = card((1.0, 0.75, 0.25, 0.0), samples=32)
+        if hasattr(mat, "surface_render_method"):
+            mat.surface_render_method = 'DITHERED'
+        else:
+            mat.blend_method = 'HASHED'
+        rec = helpers.render()
+        cols = columns(np.asarray(rec["pixels"]))
+        kept = cols[0][1]  # the red texel's own green, lit by the world
+        for k, alpha in enumerate((1.0, 0.75, 0.25, 0.0)):
+            shown = (cols[k][1] - 1.0) / (kept - 1.0)  # 1 where the texel covers, 0 where the world shows
+            self.assertAlmostEqual(shown, alpha, delta=0.06, msg=f"texel {k}")
+        self.assertFalse([m for m in messages(rec) if "material 'Card'" in m], "drawn, so nothing is said")
+
+    def test_blended_alpha_is_drawn_hashed_and_says_so(self):
+        scene, mat = card((1.0, 0.75, 0.25, 0.0), samples=16)
+        if hasattr(mat, "surface_render_method"):
+            mat.surface_render_method = 'BLENDED'
+        else:
+            mat.blend_method = 'BLEND'
+        rec = helpers.render()
+        cols = columns(np.asarray(rec["pixels"]))
+        np.testing.assert_allclose(cols[3], WORLD, atol=1e-4)
+        said = [m for m in messages(rec) if "material 'Card'" in m]
+        self.assertEqual(len(said), 1, said)
+        self.assertIn("blended alpha is drawn hashed", said[0])
+
+
+if __name__ == "__main__":
+    unittest.main()
