@@ -138,7 +138,9 @@ def shading_of(material):
         roughness = _float(node, 0.5, "Roughness")
         metallic = _float(node, 0.0, "Metallic")
         specular = _float(node, 0.5, "Specular", "Specular IOR Level")  # renamed in 4.0
-        alpha = _float(node, 1.0, "Alpha")
+        # An image's alpha into Alpha cuts the surface (BaseTexture.alpha); the socket's own value,
+        # left from before it was linked, is not the material's alpha.
+        alpha = 1.0 if material_inputs.image_alpha(node) else _float(node, 1.0, "Alpha")
         emission = emission_of(node)
     else:
         emission = (0.0, 0.0, 0.0)
@@ -155,8 +157,9 @@ def shading_of(material):
     toon, note = usable_toon(material.name, toon_of(s, base))
     if image is not None and toon.mode != PHONG.mode:
         # Toon shading draws no image (surface_pass.texture_key): said, as what is not drawn is.
+        cut = " (and its alpha cuts nothing)" if node is not None and material_inputs.image_alpha(node) else ""
         note = "; ".join(n for n in (note, f"material '{material.name}': its image '{image.image.name}' in Base Color "
-                                           "is drawn as its mean colour under toon shading") if n)
+                                           f"is drawn as its mean colour under toon shading{cut}") if n)
     note = "; ".join(n for n in (material_inputs.note(material, unread(material)), note) if n)
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.

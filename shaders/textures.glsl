@@ -11,9 +11,14 @@
 #endif
 /* An Alpha Hashed surface's threshold at this pixel and sample: interleaved gradient noise over
  * the whole frame's pixels (a render region's too), moved each sample, so that the jittered
- * samples average the cut into the alpha's coverage. */
+ * samples average the cut into the alpha's coverage. The first sample cuts at 1/2: its depth and
+ * ids are what the bands and the ink are hidden by, for every sample, so a hashed pattern there
+ * would stay in them as dots. */
 float el_alpha_hash()
 {
+  if (frame.camera.z < 0.5) {
+    return 0.5;
+  }
   vec2 p = floor(gl_FragCoord.xy) + frame.frame_pixel.xy + 5.588238 * frame.camera.z;
   return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
 }

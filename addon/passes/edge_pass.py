@@ -25,14 +25,14 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats, lighting=NONE):
         # a toon material's faces are shaded otherwise, so its bands blend over the pixel.
         # A slot drawing an image in Base Color has its own variant, the texel along the edge
         # (surface_pass.texture_key).
-        keys = {(_is_phong(s), texture_key(s, _mode(s))) for inst in scene.instances
+        keys = {(_is_phong(s), texture_key(s, _mode(s), alpha=False)) for inst in scene.instances
                 for k, s in enumerate(gpu_meshes[id(inst.mesh)].extract.slot_shading)
                 if k in gpu_meshes[id(inst.mesh)].edges}
         for phong, image in sorted(keys, key=lambda k: (not k[0], k[1] or ())):
             def slots(gm, phong=phong, image=image):
                 return {k: b for k, b in gm.edges.items()
                         if (_is_phong(gm.extract.slot_shading[k]), texture_key(gm.extract.slot_shading[k],
-                                                                                 _mode(gm.extract.slot_shading[k]))) == (phong, image)}
+                                                                                 _mode(gm.extract.slot_shading[k]), alpha=False)) == (phong, image)}
             if not any(slots(gpu_meshes[id(inst.mesh)]) for inst in scene.instances):
                 continue
             variant = {**defines, **({"EL_FACES_UNDER": 1} if phong else {}), **texture_defines(image)}
@@ -64,7 +64,7 @@ def draw_corners(targets, scene, gpu_meshes, ubo, lighting=NONE):
 
     def key_of(gm, k):
         s = gm.extract.slot_shading[k]
-        return texture_key(s, _mode(s)) or ()  # a toon slot's corners take the mean, as its bands
+        return texture_key(s, _mode(s), alpha=False) or ()  # a toon slot's corners take the mean, as its bands
 
     keys = sorted({key_of(gm, k) for gm in (gpu_meshes[id(inst.mesh)] for inst in scene.instances) for k in gm.corners})
     for pass_name, defines in (("edge_corner_cover", {"EL_CORNER_COVER": 1}), ("edge_corner", lighting.defines())):

@@ -69,20 +69,22 @@ def cull_modes(scene, camera):
     return out
 
 
-def texture_key(s, mode):
+def texture_key(s, mode, alpha=True):
     """(Closest, extension) of the variant that draws a slot's image into Base Color (its
     materials.BaseTexture, in the Phong mode), or None."""
     if s.texture is None or mode != SURFACE_MODES["PHONG"]:
         return None
     source = s.texture.source
-    return (int(source.closest), EXTEND[source.extension], int(s.texture.alpha))
+    key = (int(source.closest), EXTEND[source.extension])
+    return key + (int(s.texture.alpha),) if alpha else key  # the edge pass cuts nothing: no variants by alpha
 
 
 def texture_defines(key):
     """The defines of the variant drawing an image with texture_key `key` (shaders/textures.glsl)."""
     if key is None:
         return {}
-    return {"EL_BASE_TEXTURE": 1, "EL_TEX_CLOSEST": key[0], "EL_TEX_EXTEND": key[1], "EL_TEX_ALPHA": key[2]}
+    return {"EL_BASE_TEXTURE": 1, "EL_TEX_CLOSEST": key[0], "EL_TEX_EXTEND": key[1],
+            "EL_TEX_ALPHA": key[2] if len(key) > 2 else 0}
 
 
 def textured_uniforms(shader, s):

@@ -130,7 +130,7 @@ def vertex_coloured_low_poly():
     bpy.ops.mesh.primitive_ico_sphere_add(subdivisions=1, radius=0.7, location=(0.0, 0.0, 0.7))
     rock = bpy.context.object
     me = rock.data
-    attr = me.color_attributes.new("Col", 'FLOAT_COLOR', 'CORNER') if hasattr(me, "color_attributes") else None
+    attr = me.color_attributes.new("Col", 'FLOAT_COLOR', 'CORNER')
     rng = np.random.default_rng(7)
     face_colours = rng.uniform(0.2, 0.9, (len(me.polygons), 3))
     colours = np.ones((len(me.loops), 4), np.float32)
