@@ -37,10 +37,12 @@ def edge_mask(sharp, rounded, grow=2):
     """The pixels the rounding changes in EdgeLight's own image (more than 2/255), grown by
     `grow` pixels: where a bevel shows, and where Cycles' noise is not all there is to see."""
     m = np.abs(sharp - rounded).max(axis=-1) > 2.0 / 255.0
-    out = m.copy()
-    for dy in range(-grow, grow + 1):
-        for dx in range(-grow, grow + 1):
-            out |= np.roll(m, (dy, dx), axis=(0, 1))
+    h, w = m.shape
+    padded = np.pad(m, grow)  # no wrapping across the image's borders
+    out = np.zeros_like(m)
+    for dy in range(2 * grow + 1):
+        for dx in range(2 * grow + 1):
+            out |= padded[dy:dy + h, dx:dx + w]
     return out
 
 
