@@ -32,18 +32,26 @@ def linearise_bytes(px):
     return px
 
 
+def linear_pixels(image):
+    """(h, w, channels) float32 of the image's pixels, scene-linear (is_srgb_bytes: decoded here;
+    Non-Color and linear spaces as they are): this read's own copy, nothing written to the image."""
+    w, h = image.size
+    c = image.channels
+    px = np.empty(w * h * c, np.float32)
+    image.pixels.foreach_get(px)
+    px = px.reshape(h, w, c)
+    if is_srgb_bytes(image):
+        linearise_bytes(px)
+    return px
+
+
 def mean_color(image):
     """The image's mean colour, scene-linear (is_srgb_bytes: decoded here; Non-Color and linear
     spaces as they are)."""
     key = (image.as_pointer(), tuple(image.size), image.filepath, image.is_dirty, image.colorspace_settings.name)
     if key not in _means:
-        w, h = image.size
-        c = image.channels
-        px = np.empty(w * h * c, np.float32)
-        image.pixels.foreach_get(px)
-        px = px.reshape(h, w, c)
-        if is_srgb_bytes(image):
-            linearise_bytes(px)
+        px = linear_pixels(image)
+        c = px.shape[2]
         rgb = px.reshape(-1, c)[:, :3 if c >= 3 else 1]  # a grey image: its one value in all three
         mean = np.broadcast_to(rgb.mean(axis=0, dtype=np.float64), (3,)) if len(rgb) else np.full(3, 0.8)
         if len(_means) > 64:

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import environment_filter, material_inputs, textures
-from .material_inputs import _describe, _from_node, _value
+from .material_inputs import _describe, _feeding, _from_node, _value
 
 # (image pointer, name, size, file, unsaved edits, colour space, the pixels' CRC) ->
 # EnvironmentAtlas: the filter costs a few tenths of a second. The CRC: a new image may reuse a
@@ -95,24 +95,17 @@ def _environment(node, strength):
     rotation, why = _mapping(node.inputs["Vector"])
     if why:
         said.append(why)
-    atlas, key = _atlas(image)
+    try:
+        atlas, key = _atlas(image)
+    except (MemoryError, ValueError) as e:  # the render goes on under the socket's colour, and says why
+        return None, [f"its Color comes from {_describe(node)}, whose image '{image.name}' could not be filtered ({e})"]
     return Environment(atlas, strength, rotation, key), said
-
-
-def _from_socket(socket):
-    """The output socket feeding a linked socket, through reroutes; None when unlinked."""
-    while socket is not None and socket.is_linked:
-        link = socket.links[0]
-        if link.from_node.type != 'REROUTE':
-            return link.from_socket
-        socket = link.from_node.inputs[0]
-    return None
 
 
 def _generated(socket):
     """Whether a linked socket reads a Texture Coordinate's Generated: the world's view direction."""
-    out = _from_socket(socket)
-    return out is not None and out.node.type == 'TEX_COORD' and out.name == "Generated"
+    node, out = _feeding(socket)
+    return node is not None and node.type == 'TEX_COORD' and out.name == "Generated"
 
 
 def _mapping(vector):
@@ -156,16 +149,11 @@ def _euler_xyz(e):
 def _atlas(image):
     """(the image's filtered atlas, what it was filtered from): once per image and change;
     nothing is written to the image."""
-    w, h = image.size
-    c = image.channels
-    px = np.empty(w * h * c, np.float32)
-    image.pixels.foreach_get(px)
+    px = textures.linear_pixels(image)
+    h, w, c = px.shape
     key = (image.as_pointer(), image.name_full, (w, h), image.filepath, image.is_dirty,
            image.colorspace_settings.name, zlib.crc32(px))
     if key not in _atlases:
-        px = px.reshape(h, w, c)
-        if textures.is_srgb_bytes(image):
-            textures.linearise_bytes(px)
         rgb = px[..., :3] if c >= 3 else np.repeat(px[..., :1], 3, axis=2)
         # An HDRI's NaN, infinite or negative texels would spread through every filtered tile;
         # cleaned in place (px is this read's own copy), bright suns kept as they are.

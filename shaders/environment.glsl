@@ -36,7 +36,8 @@ vec3 el_env_tile(vec4 r, vec2 uv, bool poles)
 }
 #endif
 
-/* GGX roughness of the Blinn exponent n: el_env_specular's. */
+/* GGX roughness of the Blinn exponent n (materials.shininess_from_roughness inverted): the
+ * level a lookup takes, and lighting.glsl's el_env_specular's lobe. */
 float el_env_roughness(float n)
 {
   return pow(2.0 / (max(n, 0.0) + 2.0), 0.25);

@@ -67,7 +67,7 @@ vec3 el_blinn_phong(int i, vec3 X, vec3 N, vec3 V, vec3 albedo, vec3 spec, float
  * times Fdez-Aguera's multiple-scattering gain, which keeps a rough metal's energy. */
 vec3 el_env_specular(vec3 spec, float n, float nv)
 {
-  float rough = pow(2.0 / (max(n, 0.0) + 2.0), 0.25);
+  float rough = el_env_roughness(n); /* environment.glsl, listed before this file */
   vec4 r = rough * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
   float a004 = min(r.x * r.x, exp2(-9.28 * clamp(nv, 0.0, 1.0))) * r.x + r.y;
   vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
