@@ -638,8 +638,8 @@ def steps():
     import time
     edgelight.engine.last_render.clear()
     scene = bpy.context.scene
-    scene.edgelight.samples = 64
-    scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = 1920, 1080, 100
+    yield from set_ints([("scene.edgelight.samples", 64), ("scene.render.resolution_x", 1920),
+                         ("scene.render.resolution_y", 1080), ("scene.render.resolution_percentage", 100)])
     esc = subprocess.Popen(["sh", "-c", "sleep 2; w=$(xdotool search --name 'Blender Render' | tail -1); "
                             "[ -n \"$w\" ] && xdotool key --window \"$w\" Escape"])
     invoked = time.monotonic()
@@ -677,17 +677,29 @@ def window_screenshot(win, name):
     return px, path
 
 
-def settings_when_allowed(scene, values):
-    """Sets (resolution x, y, EdgeLight samples) as soon as Blender allows writing to the scene:
-    while a render job ends (the previous F12's, on a loaded machine) it refuses ("Writing to ID
-    classes in this context is not allowed")."""
+def set_ints(pairs):
+    """Sets integer settings ((data path from the context, value), ...) through
+    wm.context_set_int. Blender's write guard ("Writing to ID classes in this context is not
+    allowed") is one flag shared by its threads, each Python call restoring the value it found:
+    an F12 whose render() began while the main thread drew a panel puts back "refused" when it
+    returns, and a timer's plain assignment is then refused for the rest of the session (CI,
+    once). An operator's execute runs with writes allowed whatever the flag holds."""
     for _ in range(100):
-        try:
-            scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples = values
+        for path, value in pairs:
+            bpy.ops.wm.context_set_int(data_path=path, value=value)
+        got = [eval("bpy.context." + path) for path, _ in pairs]  # noqa: S307 (the test's own paths)
+        if got == [value for _, value in pairs]:
             return
-        except AttributeError:
-            yield 0.2
-    scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples = values  # raises: says why
+        yield 0.2
+    raise RuntimeError(f"settings stayed {got}; wanted {pairs}")
+
+
+RESOLUTION_SAMPLES = ("scene.render.resolution_x", "scene.render.resolution_y", "scene.edgelight.samples")
+
+
+def settings_when_allowed(scene, values):
+    """Sets (resolution x, y, EdgeLight samples): set_ints."""
+    yield from set_ints(list(zip(RESOLUTION_SAMPLES, values)))
 
 
 def failed_render(window, area, region):
