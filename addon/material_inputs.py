@@ -1,7 +1,7 @@
 """What of a material's node tree EdgeLight reads, and what it cannot: the Principled BSDF's
-socket values (materials.py) and an Image Texture straight into its Base Color (image_input),
-never anything else linked into them, and none of its lobes past the base, metallic and
-specular ones. What a material sets that EdgeLight does not draw is said once
+socket values and the node chains linked into them that node_program.py evaluates (an image
+per material, into Base Color, Metallic and Roughness), and none of its lobes past the base,
+metallic and specular ones. What a material sets that EdgeLight does not draw is said once
 per material (a report line) and in its panel, instead of rendering as if it were not there.
 """
 from dataclasses import dataclass
@@ -9,14 +9,14 @@ from dataclasses import dataclass
 from . import compat
 from .passes import shader_specs
 
-# Principled BSDF inputs EdgeLight reads as values (materials.shading_of); a link into one is
-# not followed: its socket's own value is drawn. Names of 3.4 and of 4.0+ (renamed sockets).
+# Principled BSDF inputs EdgeLight reads (materials.shading_of): their values, or the chains
+# linked into them (node_program); a chain it cannot evaluate leaves the socket's own value
+# drawn, which is said. Names of 3.4 and of 4.0+ (renamed sockets).
 READ = ("Base Color", "Metallic", "Roughness", "Specular", "Specular IOR Level", "Alpha")
-# The emission's sockets (3.4's and 4.0+'s names): their values are drawn (materials.emission_of);
-# a link into either means a glow EdgeLight cannot place, so none is drawn, and that is said.
+# The emission's sockets (3.4's and 4.0+'s names): their values or folded chains are drawn
+# (materials.emission_of); a chain EdgeLight cannot fold means a glow it cannot place, so none is
+# drawn, and that is said.
 EMISSION = ("Emission", "Emission Color", "Emission Strength")
-# Inputs an Image Texture may feed (image_input): drawn, so not said.
-TEXTURED = ("Base Color",)
 # Inputs that change the look when linked, though EdgeLight uses the mesh's normals.
 LINKED_IGNORED = ("Normal",)
 # Lobes EdgeLight does not draw: (label, weight sockets by version). On when a weight is above 0.
@@ -54,28 +54,33 @@ _DRAWN_INTERPOLATION = {'Closest', 'Linear', 'Cubic', 'Smart'}
 EXTENSIONS = shader_specs.enum("surface_modes.json", "EL_EXTEND")
 
 
-def image_input(socket):
-    """The ImageInput feeding `socket` straight from an Image Texture's Color output (through
-    reroutes), or None when the socket is unlinked or fed otherwise (then unread_inputs says
-    what it is). Cubic and Smart interpolation draw as Linear."""
-    link_socket = socket
-    while link_socket is not None and link_socket.is_linked:
-        link = link_socket.links[0]
-        node = link.from_node
-        if node.type == 'REROUTE':
-            link_socket = node.inputs[0]
-            continue
-        if node.type != 'TEX_IMAGE' or link.from_socket.name != "Color" or node.image is None:
-            return None
-        if node.projection != 'FLAT' or node.interpolation not in _DRAWN_INTERPOLATION:
-            return None
-        uv = _uv_source(node.inputs["Vector"])
-        if uv is None or node.image.source not in {'FILE', 'GENERATED'} or image_unreadable(node.image):
-            return None
-        if node.extension not in EXTENSIONS:
-            return None
-        return ImageInput(node.image, uv, node.interpolation == 'Closest', node.extension)
-    return None
+def image_node_input(node):
+    """The ImageInput of an Image Texture node EdgeLight can draw, or None (image_node_problem
+    says why). Cubic and Smart interpolation draw as Linear."""
+    if image_node_problem(node):
+        return None
+    uv = _uv_source(node.inputs["Vector"])
+    return ImageInput(node.image, uv, node.interpolation == 'Closest', node.extension)
+
+
+def image_node_problem(node):
+    """Why EdgeLight cannot draw an Image Texture node as EEVEE does, or ""."""
+    image = node.image
+    if image is None:
+        return "no image"
+    if node.projection != 'FLAT':
+        return f"its {node.projection.title()} projection"
+    if node.interpolation not in _DRAWN_INTERPOLATION:
+        return f"its {node.interpolation} interpolation"
+    if _uv_source(node.inputs["Vector"]) is None:
+        return "its Vector from other than a UV map"
+    if image.source not in {'FILE', 'GENERATED'}:
+        return f"its image '{image.name}' is a {image.source.lower()}"
+    if image_unreadable(image):
+        return f"its image '{image.name}' has no pixels"
+    if node.extension not in EXTENSIONS:
+        return f"its {node.extension.title()} extension"
+    return ""
 
 
 def _feeding(socket):
@@ -88,15 +93,15 @@ def _feeding(socket):
     return None, None
 
 
-def image_alpha(node):
-    """Whether the Principled BSDF `node`'s Alpha comes from the Alpha output of the Image
-    Texture that feeds its Base Color (and is drawn there: image_input), which the surface pass
-    then cuts by (materials.BaseTexture)."""
-    alpha, base = node.inputs.get("Alpha"), node.inputs.get("Base Color")
-    if alpha is None or base is None or image_input(base) is None:
+def image_alpha(node, image):
+    """Whether the Principled BSDF `node`'s Alpha comes straight from the Alpha output of an Image
+    Texture of `image` (the ImageInput its node program draws: node_program.Program.image), which
+    the surface pass then cuts by (materials.BaseTexture)."""
+    alpha = node.inputs.get("Alpha")
+    if alpha is None or image is None:
         return False
     source, out = _feeding(alpha)
-    return source is not None and out.name == "Alpha" and source == _feeding(base)[0]
+    return source is not None and source.type == 'TEX_IMAGE' and out.name == "Alpha" and image_node_input(source) == image
 
 
 def _uv_source(vector):
@@ -187,24 +192,27 @@ def principled_of(material):
     return first, unread
 
 
-def unread_inputs(node):
-    """[(short, long)] of what the Principled BSDF `node` sets that EdgeLight does not draw."""
+def unread_inputs(node, chains):
+    """[(short, long)] of what the Principled BSDF `node` sets that EdgeLight does not draw;
+    `chains` (node_program.read) says which linked inputs' chains it cannot evaluate, and why."""
     out = []
+    failed = dict(chains.unread)
     for name in READ + EMISSION + LINKED_IGNORED:
         socket = node.inputs.get(name)
         source = _from_node(socket) if socket is not None else None
         if source is None:
             continue
-        if name in TEXTURED and image_input(socket) is not None:
-            continue  # drawn (surface.frag.glsl's EL_BASE_TEXTURE)
-        if name == "Alpha" and image_alpha(node):
+        if name == "Alpha" and image_alpha(node, chains.program.image):
             continue  # drawn: the image's alpha cuts the surface (EL_TEX_ALPHA)
+        if name in READ + EMISSION and name not in failed:
+            continue  # drawn: folded, or per pixel (node_program)
+        what = failed.get(name, _describe(source))
         if name in EMISSION:
-            out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)} (no emission is drawn)"))
+            out.append((f"{name}: {source.bl_label}", f"{name} from {what} (no emission is drawn)"))
         elif name in READ:
-            out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)} (its value {_value(socket)} is drawn)"))
+            out.append((f"{name}: {source.bl_label}", f"{name} from {what} (its value {_value(socket)} is drawn)"))
         else:
-            out.append((f"{name}: {source.bl_label}", f"{name} from {_describe(source)}"))
+            out.append((f"{name}: {source.bl_label}", f"{name} from {what}"))
     for label, names in LOBES:
         for name in names:
             socket = node.inputs.get(name)

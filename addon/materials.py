@@ -5,7 +5,7 @@ from dataclasses import dataclass, replace
 
 import bpy
 
-from . import color_ramp, compat, material_inputs, textures
+from . import color_ramp, compat, material_inputs, node_program, textures
 from . import material_defaults as defaults
 from .passes import shader_specs
 from .properties import K_MAX
@@ -57,14 +57,16 @@ class Shading:
 
 @dataclass(frozen=True)
 class BaseTexture:
-    """An Image Texture in a material's Base Color (material_inputs.image_input), as the surface
-    pass, the bands and the corner patches draw it (EL_BASE_TEXTURE): albedo = texel x
-    (1 - metallic), F0 = `f0` + texel x metallic. The Shading's own base and specular colours take
-    the image's mean colour, for what draws the material without the image (toon shading, its
-    default ramp stops)."""
+    """An image in a material's node chains into Base Color, Metallic or Roughness, as the
+    surface pass, the bands and the corner patches draw it (EL_BASE_TEXTURE): its node program
+    (node_program.Program) gives base colour, metallic and roughness per pixel, split as
+    shading_of splits the values. The Shading's own colours take the program at the image's
+    mean colour, for what draws the material without the image (toon shading, its default ramp
+    stops)."""
     source: object         # material_inputs.ImageInput
-    metallic: float
-    f0: tuple              # the dielectric part of F0: 0.08 specular (1 - metallic)
+    program: object        # node_program.Program
+    f0: float              # the dielectric F0: 0.08 x Specular
+    shininess: float = -1.0  # the material's own Blinn exponent (Custom Shininess); -1: from roughness
     alpha: int = 0         # EL_ALPHA (surface_modes.json): how its alpha, fed into Alpha too, cuts
     alpha_threshold: float = 0.5  # EL_ALPHA_CLIP's
 
@@ -106,10 +108,20 @@ def _principled(material):
     return material_inputs.principled_of(material)[0]
 
 
+def chains_of(node):
+    """What the node chains linked into a Principled BSDF's inputs come to (node_program.read)."""
+    return node_program.read(node, material_inputs.READ + material_inputs.EMISSION)
+
+
+def unread_inputs(node):
+    """[(short, long)] of what the Principled BSDF `node` sets that EdgeLight does not draw."""
+    return material_inputs.unread_inputs(node, chains_of(node))
+
+
 def unread(material):
     """[(short, long)] of what `material` sets that EdgeLight does not draw (material_inputs)."""
     node, said = material_inputs.principled_of(material)
-    return said + (material_inputs.unread_inputs(node) if node is not None else [])
+    return said + (unread_inputs(node) if node is not None else [])
 
 
 def base_color_of(material):
@@ -129,19 +141,27 @@ def shading_of(material):
                        defaults.ROUNDED, defaults.HIGHLIGHT_STRENGTH, defaults.RADIUS, defaults.TINT, defaults.EDGES,
                        defaults.ANGLE_DEG, Toon(SURFACE_MODES[defaults.SHADING]))
     node = _principled(material)
-    image = None
+    image = program = None
     if node is not None:
-        base = base_color_of(material)
-        image = material_inputs.image_input(node.inputs["Base Color"]) if node.inputs.get("Base Color") else None
-        if image is not None:
-            base = textures.mean_color(image.image)
-        roughness = _float(node, 0.5, "Roughness")
-        metallic = _float(node, 0.0, "Metallic")
-        specular = _float(node, 0.5, "Specular", "Specular IOR Level")  # renamed in 4.0
+        chains = chains_of(node)
+        folded = _Folded(node, chains.values)
+        program = chains.program
+        image = program.image
+        base = folded.color("Base Color", DEFAULT_COLOR)
+        roughness = folded.scalar(0.5, "Roughness")
+        metallic = folded.scalar(0.0, "Metallic")
+        if image is not None:  # the program at the image's mean colour
+            at_mean = node_program.run(program, (*textures.mean_color(image.image), 1.0))
+            base = tuple(at_mean["Base Color"][:3])
+            metallic, roughness = at_mean["Metallic"][0], at_mean["Roughness"][0]
+        # As the Principled BSDF takes them (material_program.glsl): no negative albedo.
+        base = tuple(max(c, 0.0) for c in base)
+        metallic, roughness = min(max(metallic, 0.0), 1.0), min(max(roughness, 0.0), 1.0)
+        specular = folded.scalar(0.5, "Specular", "Specular IOR Level")  # renamed in 4.0
         # An image's alpha into Alpha cuts the surface (BaseTexture.alpha); the socket's own value,
         # left from before it was linked, is not the material's alpha.
-        alpha = 1.0 if material_inputs.image_alpha(node) else _float(node, 1.0, "Alpha")
-        emission = emission_of(node)
+        alpha = 1.0 if material_inputs.image_alpha(node, image) else folded.scalar(1.0, "Alpha")
+        emission = emission_of(node, folded)
     else:
         emission = (0.0, 0.0, 0.0)
         base = tuple(material.diffuse_color[:3])
@@ -157,15 +177,15 @@ def shading_of(material):
     toon, note = usable_toon(material.name, toon_of(s, base))
     if image is not None and toon.mode != PHONG.mode:
         # Toon shading draws no image (surface_pass.texture_key): said, as what is not drawn is.
-        cut = " (and its alpha cuts nothing)" if node is not None and material_inputs.image_alpha(node) else ""
-        note = "; ".join(n for n in (note, f"material '{material.name}': its image '{image.image.name}' in Base Color "
-                                           f"is drawn as its mean colour under toon shading{cut}") if n)
+        cut = " (and its alpha cuts nothing)" if material_inputs.image_alpha(node, image) else ""
+        note = "; ".join(n for n in (note, f"material '{material.name}': its image '{image.image.name}' is drawn as its "
+                                           f"mean colour under toon shading{cut}") if n)
     note = "; ".join(n for n in (material_inputs.note(material, unread(material)), note) if n)
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.
     alpha_mode, threshold, alpha_note = _alpha_mode(material, node, image)
     note = "; ".join(n for n in (note, alpha_note) if n)
-    texture = (BaseTexture(image, metallic, (f0 * (1.0 - metallic),) * 3, alpha_mode, threshold)
+    texture = (BaseTexture(image, program, f0, float(n) if s.use_custom_shininess else -1.0, alpha_mode, threshold)
                if image is not None else None)
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full,
@@ -176,7 +196,7 @@ def _alpha_mode(material, node, image):
     """(EL_ALPHA value, clip threshold, note) of a material whose image feeds its Alpha too:
     cut as EEVEE cuts it (compat.alpha_blend); Alpha Blend, which EdgeLight does not sort, is
     drawn hashed, which the samples average to the same coverage, and that is said."""
-    if image is None or node is None or not material_inputs.image_alpha(node):
+    if image is None or node is None or not material_inputs.image_alpha(node, image):
         return ALPHA["NONE"], 0.5, ""
     blend, threshold = compat.alpha_blend(material)
     if blend == 'OPAQUE':
@@ -188,15 +208,41 @@ def _alpha_mode(material, node, image):
     return ALPHA["HASHED"], threshold, note
 
 
-def emission_of(node):
+class _Folded:
+    """A Principled BSDF's input values: a linked input's folded chain (node_program), else its
+    socket's value."""
+
+    def __init__(self, node, values):
+        self.node, self.values = node, values
+
+    def _get(self, names):
+        for name in names:
+            if name in self.values:
+                return self.values[name]
+        return _input(self.node, *names)
+
+    def scalar(self, default, *names):
+        v = self._get(names)
+        return default if v is None else float(v if isinstance(v, (int, float)) else v[0])
+
+    def color(self, name, default):
+        v = self._get((name,))
+        return default if v is None else tuple(float(c) for c in v[:3])
+
+    def unfolded(self, *names):
+        """Whether one of the inputs is linked to a chain that did not fold."""
+        return any(n in self.node.inputs and self.node.inputs[n].is_linked and n not in self.values for n in names)
+
+
+def emission_of(node, folded):
     """A Principled BSDF's emitted radiance: its Emission colour (3.4: Emission; 4.0+: Emission
-    Color) x Emission Strength, the sockets' values; none where either is linked (4.0's unlinked
-    colour is white: a texture's glow would be a white one), which material_inputs says."""
-    sockets = [node.inputs.get(n) for n in material_inputs.EMISSION]
-    if any(s is not None and s.is_linked for s in sockets):
+    Color) x Emission Strength, the sockets' values or folded chains; none where a chain did not
+    fold (4.0's unlinked colour is white: a texture's glow would be a white one), which
+    material_inputs says."""
+    if folded.unfolded(*material_inputs.EMISSION):
         return (0.0, 0.0, 0.0)
-    color = _input(node, "Emission Color", "Emission")
-    strength = _float(node, 1.0, "Emission Strength")
+    color = folded.color("Emission Color", None) or folded.color("Emission", None)
+    strength = folded.scalar(1.0, "Emission Strength")
     if color is None or not math.isfinite(strength):
         return (0.0, 0.0, 0.0)
     out = tuple(max(float(c), 0.0) * max(strength, 0.0) for c in color[:3])

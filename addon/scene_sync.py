@@ -359,7 +359,7 @@ def textured_corners(name, mesh, shading, tri_loops):
                 missing.add(uv_name)
                 which = f"UV map '{uv_name}'" if uv_name else "UV map"
                 note = (f"{name}: material '{s.material}' maps image '{s.texture.source.image.name}' by a {which} the "
-                        f"mesh does not have; its Base Color is drawn as the image's mean colour")
+                        f"mesh does not have; it is drawn as if the image were its mean colour")
                 s = dataclasses.replace(s, texture=None, note="; ".join(n for n in (s.note, note) if n))
         out.append(s)
     return out, corner_uv, missing

@@ -13,17 +13,19 @@
 vec3 el_corner_colour(vec3 X, vec3 N, vec3 V)
 {
   vec3 albedo = base_color.rgb, f0 = spec_color.rgb;
+  float n = spec_color.w;
 #ifdef EL_BASE_TEXTURE
-  /* Under an image, the texel at the corner's vertex, split as the surface pass splits it. */
-  vec3 texel = el_base_texel(corner_uv).rgb;
-  f0 += texel * (1.0 - base_color.r);
-  albedo = texel * base_color.rgb;
+  /* Under an image, its node program at the corner's vertex (material_program.glsl). */
+  ElMaterial m = el_material_at(corner_uv);
+  albedo = m.albedo;
+  f0 = m.f0;
+  n = m.n;
 #endif
   vec3 col = material.emission.rgb + albedo * el_world_diffuse(N) +
-             tint.rgb * el_world_specular(reflect(-V, N), spec_color.w) * el_env_specular(f0, spec_color.w, dot(N, V));
+             tint.rgb * el_world_specular(reflect(-V, N), n) * el_env_specular(f0, n, dot(N, V));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
-    col += el_blinn_phong(i, X, N, V, albedo, tint.rgb * f0, spec_color.w);
+    col += el_blinn_phong(i, X, N, V, albedo, tint.rgb * f0, n);
   }
   return col;
 }

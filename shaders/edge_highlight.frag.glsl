@@ -36,7 +36,7 @@ void main()
   vec3 V = el_safe_normalize(to_eye);
 
 #ifdef EL_BASE_TEXTURE
-  el_band_texel = el_base_texel(mix(edge_uv.xy, edge_uv.zw, clamp(edge_t, 0.0, 1.0))).rgb;
+  el_band_material = el_material_at(mix(edge_uv.xy, edge_uv.zw, clamp(edge_t, 0.0, 1.0)));
 #endif
   float world_per_px = dist / frame.camera.x;
   float across = dot(pc - edge_screen.xy, edge_screen.zw);

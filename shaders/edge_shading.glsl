@@ -1,13 +1,15 @@
-/* The material's albedo and F0 on the band: its colours, or under an image (EL_BASE_TEXTURE)
- * the texel where the pixel's band lies along the edge (el_band_texel, set by the pass from
- * edge_uv), split as the surface pass splits it (base_color.rgb 1 - metallic, spec_color.rgb the
- * dielectric F0: materials.BaseTexture). */
-vec3 el_band_texel = vec3(0.0);
+/* The material's albedo, F0 and Blinn exponent on the band: its colours, or under an image
+ * (EL_BASE_TEXTURE) its node program where the pixel's band lies along the edge
+ * (el_band_material, set by the pass from edge_uv: material_program.glsl), as the surface pass
+ * takes them. */
+#ifdef EL_BASE_TEXTURE
+ElMaterial el_band_material;
+#endif
 
 vec3 el_albedo()
 {
 #ifdef EL_BASE_TEXTURE
-  return el_band_texel * base_color.rgb;
+  return el_band_material.albedo;
 #else
   return base_color.rgb;
 #endif
@@ -16,9 +18,18 @@ vec3 el_albedo()
 vec3 el_f0()
 {
 #ifdef EL_BASE_TEXTURE
-  return spec_color.rgb + el_band_texel * (1.0 - base_color.r);
+  return el_band_material.f0;
 #else
   return spec_color.rgb;
+#endif
+}
+
+float el_shininess()
+{
+#ifdef EL_BASE_TEXTURE
+  return el_band_material.n;
+#else
+  return spec_color.w;
 #endif
 }
 
@@ -27,7 +38,7 @@ vec3 el_f0()
  * sees: edge_band_pixel.glsl). */
 vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
 {
-  float n = spec_color.w;
+  float n = el_shininess();
   /* The world on the arc: its lobe's albedo at the arc's mean cosine to the eye. */
   float nv = el_arc_mean(g, V, edge, 1.0);
 #ifdef EL_ENVIRONMENT
@@ -69,10 +80,10 @@ vec3 el_edge_colour(ElArc g, vec3 X, vec3 V, vec3 edge)
 vec3 el_face_colour(vec3 N, vec3 X, vec3 V)
 {
   vec3 col = material.emission.rgb + el_albedo() * el_world_diffuse(N) +
-             el_world_specular(reflect(-V, N), spec_color.w) * el_env_specular(el_f0(), spec_color.w, dot(N, V));
+             el_world_specular(reflect(-V, N), el_shininess()) * el_env_specular(el_f0(), el_shininess(), dot(N, V));
   int count = int(frame.camera.y + 0.5);
   for (int i = 0; i < count; i++) {
-    col += el_blinn_phong(i, X, N, V, el_albedo(), el_f0(), spec_color.w);
+    col += el_blinn_phong(i, X, N, V, el_albedo(), el_f0(), el_shininess());
   }
   return col;
 }

@@ -93,12 +93,12 @@ void main()
   vec3 spec = spec_color.rgb;
   float n = spec_color.w;
 #ifdef EL_BASE_TEXTURE
-  /* An image in Base Color (materials.BaseTexture): base_color.rgb is 1 - metallic and
-   * spec_color.rgb the dielectric F0, so the texel splits into albedo and F0 as a base colour
-   * does (materials.shading_of). */
-  vec3 texel = el_base_texel(surface_uv).rgb;
-  spec += texel * (1.0 - base_color.r);
-  albedo = texel * base_color.rgb;
+  /* An image in the material's node chains (materials.BaseTexture): its node program gives the
+   * albedo, F0 and exponent here (material_program.glsl). */
+  ElMaterial m = el_material_at(surface_uv);
+  albedo = m.albedo;
+  spec = m.f0;
+  n = m.n;
 #endif
   /* The world: its irradiance on the albedo, its prefiltered radiance around the reflection
    * times the lobe's directional albedo (the split sum; environment.glsl). */

@@ -4,6 +4,7 @@ add-on is loaded (a scene has few distinct materials): a draw binds it, nothing 
 frame."""
 import gpu
 
+from .. import node_program
 from . import shader_specs
 
 MATERIAL_DATA = shader_specs.Block("material_data.json")
@@ -11,16 +12,25 @@ _buffers = {}
 
 
 def values(shading):
-    """The block's members of a materials.Shading."""
+    """The block's members of a materials.Shading: with an image, its node program
+    (node_program.Program, run by material_program.glsl)."""
     t = shading.texture
-    return {"emission": (*shading.emission, 0.0),
-            "alpha_clip": (t.alpha_threshold if t is not None else 0.5, 0.0, 0.0, 0.0)}
+    out = {"emission": (*shading.emission, 0.0),
+           "alpha_clip": (t.alpha_threshold if t is not None else 0.5, 0.0, 0.0, 0.0)}
+    if t is not None:
+        p = t.program
+        out["program"] = (float(len(p.code)), t.f0, t.shininess, 0.0)
+        out["outputs"] = (*(float(p.outputs[k]) for k in node_program.PER_PIXEL), 0.0)
+        out["code"] = tuple(float(v) for ins in p.code for v in ins[:4])
+        out["args"] = tuple(float(v) for ins in p.code for v in ins[4:])
+        out["consts"] = tuple(float(v) for c in p.consts for v in c)
+    return out
 
 
 def buffer(shading):
     """The GPUUniformBuf of a slot's MaterialData (found by the values it holds: a draw per
     instance and sample asks, so no packing before the lookup)."""
-    key = tuple(values(shading).items())
+    key = tuple((k, v) for k, v in values(shading).items())
     ubo = _buffers.get(key)
     if ubo is None:
         if len(_buffers) >= 1024:

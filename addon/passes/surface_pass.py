@@ -88,14 +88,10 @@ def texture_defines(key):
 
 
 def textured_uniforms(shader, s):
-    """A textured slot's colours (materials.BaseTexture): 1 - metallic, which the texel scales
-    into the albedo, and the dielectric F0, to which the texel's metallic part is added."""
-    t = s.texture
-    keep = 1.0 - t.metallic
-    shader_lib.set_uniform(shader, "base_color", (keep, keep, keep, s.alpha))
-    shader_lib.set_uniform(shader, "spec_color", (*t.f0, s.shininess))
-    shader_lib.set_block(shader, "material", material_data.buffer(s))
-    shader_lib.set_sampler(shader, "base_tex", textures.gpu_texture(t.source.image))
+    """A textured slot's uniforms: its colours (alpha; the node program in its MaterialData
+    block gives the rest: materials.BaseTexture) and its image."""
+    shading_uniforms(shader, s)
+    shader_lib.set_sampler(shader, "base_tex", textures.gpu_texture(s.texture.source.image))
 
 
 def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False, culls=None,

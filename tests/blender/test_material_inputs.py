@@ -38,7 +38,7 @@ class MaterialInputs(unittest.TestCase):
         mat.use_nodes = True
         node, unread = self.inputs().principled_of(mat)
         self.assertEqual(node.type, 'BSDF_PRINCIPLED')
-        self.assertEqual(unread + self.inputs().unread_inputs(node), [])
+        self.assertEqual(unread + helpers.addon().materials.unread_inputs(node), [])
         assign(mat)
         self.assertEqual(warnings(helpers.render(), "does not draw"), [])
 
@@ -60,7 +60,7 @@ class MaterialInputs(unittest.TestCase):
         # (test_emission.py) are drawn: nothing is said of them (the boxes have no UV map, and
         # that is said).
         self.assertEqual(warnings(helpers.render(), "does not draw"), [])
-        self.assertEqual(self.inputs().unread_inputs(node), [])
+        self.assertEqual(helpers.addon().materials.unread_inputs(node), [])
         # Through a node EdgeLight does not evaluate, the image is not drawn, and that is said.
         gamma = tree.nodes.new("ShaderNodeGamma")
         tree.links.new(tex.outputs["Color"], gamma.inputs["Color"])
@@ -73,8 +73,8 @@ class MaterialInputs(unittest.TestCase):
         self.assertEqual(len(lines), 1, lines)
         self.assertIn("Base Color from Gamma", lines[0])
         self.assertIn("its value (0.5, 0.4, 0.3) is drawn", lines[0])
-        self.assertIn("Emission Strength from Image Texture 'Mask' (no emission is drawn)", lines[0])
-        unread = self.inputs().unread_inputs(node)
+        self.assertIn("Emission Strength from Image Texture 'Mask': no image (no emission is drawn)", lines[0])
+        unread = helpers.addon().materials.unread_inputs(node)
         self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Base Color: Gamma, Emission Strength: Image Texture")
 
     def test_other_surface_shader_is_named_and_the_render_goes_on(self):
@@ -99,7 +99,7 @@ class MaterialInputs(unittest.TestCase):
         mat.use_nodes = True
         node = principled(mat)
         (node.inputs.get("Transmission Weight") or node.inputs["Transmission"]).default_value = 1.0
-        self.assertEqual([s for s, _ in self.inputs().unread_inputs(node)], ["Transmission"])
+        self.assertEqual([s for s, _ in helpers.addon().materials.unread_inputs(node)], ["Transmission"])
 
     def test_world_texture_said(self):
         scene()

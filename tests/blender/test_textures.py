@@ -1,4 +1,4 @@
-"""An Image Texture into the Principled BSDF's Base Color (material_inputs.image_input,
+"""An Image Texture into the Principled BSDF's Base Color (material_inputs.image_node_input,
 shaders/textures.glsl): a texel's colour at its place on a UV-mapped quad, its colour space
 decoded; Closest and Linear; the UV map a UV Map node names; a metal's reflection tinted by the
 texel; what is still not drawn, and a UV map the mesh lacks, said."""

@@ -1,0 +1,376 @@
+"""Node chains into a Principled BSDF's inputs (docs/addon.md, "Node chains"): RGB, Value, Mix
+(and 3.4's Mix RGB), Math, ColorRamp, Invert, Separate and Combine (RGB, Color, XYZ), Clamp and
+one image (Image Texture), with Blender's implicit conversions between colours, vectors and
+floats. The one description of the ops is shaders/material_data.json (EL_OP, EL_MIX, EL_MATH);
+`apply` here and material_program.glsl implement it the same way, which a test pins
+(test_node_program). A chain without the image is folded here into its value; one with it
+becomes the node program the surface, band and corner programs run per pixel (EL_BASE_TEXTURE).
+"""
+import math
+from dataclasses import dataclass, field
+
+from . import material_inputs
+from .passes import shader_specs
+
+OP = shader_specs.enum("material_data.json", "EL_OP")
+MIX = shader_specs.enum("material_data.json", "EL_MIX")
+MATH = shader_specs.enum("material_data.json", "EL_MATH")
+_LIMITS = shader_specs.defines(shader_specs.load("material_data.json"))
+MAX_CODE, MAX_CONST = _LIMITS["EL_MAT_CODE"], _LIMITS["EL_MAT_CONST"]
+MAX_STOPS = 8
+LUMINANCE = (0.2126, 0.7152, 0.0722)  # a colour read as a float (EEVEE's convert_rgba_to_float)
+# Principled inputs a chain with the image may feed (the node program's outputs); the others'
+# chains are folded, and one with the image there is said.
+PER_PIXEL = ("Base Color", "Metallic", "Roughness")
+
+
+class Unsupported(Exception):
+    """A node EdgeLight cannot evaluate: its description and why."""
+
+
+@dataclass(frozen=True)
+class Program:
+    """A material's node program. `code`: ((op, a, b, c, sub, s1, s2, s3), ...); operands below
+    MAX_CONST index `consts`, from it the result of instruction (operand - MAX_CONST).
+    `outputs`: {input: operand} of PER_PIXEL inputs fed by the image. `image`: the
+    material_inputs.ImageInput its IMAGE ops read (None: no program)."""
+    code: tuple = ()
+    consts: tuple = ()
+    outputs: dict = field(default_factory=dict)
+    image: object = None
+
+
+# ---- the ops, as material_program.glsl computes them (vec4 values; a float is (f, f, f, 1)) ----
+
+def _f(x):
+    return (x, x, x, 1.0)
+
+
+def _gray(v, how):
+    return sum(c * w for c, w in zip(v[:3], LUMINANCE)) if how == 0 else (v[0] + v[1] + v[2]) / 3.0
+
+
+def _pow(a, b):
+    """EEVEE's math_power / compatible_pow."""
+    def compatible(x, y):
+        if y == 0.0:
+            return 1.0
+        if x < 0.0:
+            p = math.pow(-x, y)
+            return p if math.fmod(-y, 2.0) == 0.0 else -p
+        return 0.0 if x == 0.0 else math.pow(x, y)
+    if a >= 0.0:
+        return compatible(a, b)
+    frac = math.fmod(abs(b), 1.0)
+    return compatible(a, math.floor(b + 0.5)) if frac > 0.999 or frac < 0.001 else 0.0
+
+
+_MATH_FN = {
+    "ADD": lambda a, b, c: a + b, "SUBTRACT": lambda a, b, c: a - b, "MULTIPLY": lambda a, b, c: a * b,
+    "DIVIDE": lambda a, b, c: a / b if b != 0.0 else 0.0, "MULTIPLY_ADD": lambda a, b, c: a * b + c,
+    "POWER": lambda a, b, c: _pow(a, b), "SQRT": lambda a, b, c: math.sqrt(a) if a > 0.0 else 0.0,
+    "ABSOLUTE": lambda a, b, c: abs(a), "MINIMUM": lambda a, b, c: min(a, b), "MAXIMUM": lambda a, b, c: max(a, b),
+    "LESS_THAN": lambda a, b, c: 1.0 if a < b else 0.0, "GREATER_THAN": lambda a, b, c: 1.0 if a > b else 0.0,
+    "ROUND": lambda a, b, c: math.floor(a + 0.5), "FLOOR": lambda a, b, c: math.floor(a),
+    "CEIL": lambda a, b, c: math.ceil(a), "FRACT": lambda a, b, c: a - math.floor(a),
+    "SINE": lambda a, b, c: math.sin(a), "COSINE": lambda a, b, c: math.cos(a),
+    "EXPONENT": lambda a, b, c: math.exp(min(a, 88.0)), "SIGN": lambda a, b, c: math.copysign(1.0, a) if a != 0.0 else 0.0,
+    "TRUNC": lambda a, b, c: float(math.trunc(a)),
+}
+_MATH_BY_VALUE = {v: _MATH_FN[k] for k, v in MATH.items()}
+
+
+def _blend(blend, a, b, t):
+    """EEVEE's mix_* of two colours' rgb at factor t (alpha is the first's)."""
+    s = 1.0 - t
+    out = []
+    for x, y in zip(a[:3], b[:3]):
+        if blend == MIX["DARKEN"]:
+            v = x + t * (min(x, y) - x)
+        elif blend == MIX["MULTIPLY"]:
+            v = x + t * (x * y - x)
+        elif blend == MIX["LIGHTEN"]:
+            v = x + t * (max(x, y) - x)
+        elif blend == MIX["SCREEN"]:
+            v = 1.0 - (s + t * (1.0 - y)) * (1.0 - x)
+        elif blend == MIX["ADD"]:
+            v = x + t * y
+        elif blend == MIX["SUBTRACT"]:
+            v = x - t * y
+        elif blend == MIX["DIVIDE"]:
+            v = s * x + t * x / y if y != 0.0 else x
+        elif blend == MIX["DIFFERENCE"]:
+            v = x + t * (abs(x - y) - x)
+        elif blend == MIX["OVERLAY"]:
+            v = x * (s + 2.0 * t * y) if x < 0.5 else 1.0 - (s + 2.0 * t * (1.0 - y)) * (1.0 - x)
+        elif blend == MIX["LINEAR_LIGHT"]:
+            v = x + t * (2.0 * (y - 0.5))
+        else:
+            v = x + t * (y - x)
+        out.append(v)
+    return (*out, a[3])
+
+
+def _ramp(fac, linear, positions, colours):
+    """A ColorRamp (RGB) at `fac`: the first stop's colour before it, the last's after; between,
+    the left stop's (constant) or the two blended (linear)."""
+    if fac <= positions[0]:
+        return colours[0]
+    for k in range(1, len(positions)):
+        if fac < positions[k]:
+            if not linear:
+                return colours[k - 1]
+            span = positions[k] - positions[k - 1]
+            t = (fac - positions[k - 1]) / span if span > 0.0 else 0.0
+            return tuple(p + t * (q - p) for p, q in zip(colours[k - 1], colours[k]))
+    return colours[-1]
+
+
+def _clamp01(v):
+    return tuple(min(max(c, 0.0), 1.0) for c in v[:3]) + (v[3],)
+
+
+def apply(op, sub, settings, a, b, c, texel=(0.0, 0.0, 0.0, 0.0), ramp=None):
+    """One instruction's value from its operands' (vec4 tuples); `ramp`: (positions, colours)."""
+    if op == OP["IMAGE"]:
+        return _f(texel[3]) if sub == 1 else tuple(texel)
+    if op == OP["MIX"]:
+        t = min(max(c[0], 0.0), 1.0) if settings[0] else c[0]
+        out = _blend(sub, a, b, t)
+        return _clamp01(out) if settings[1] else out
+    if op == OP["MATH"]:
+        v = _MATH_BY_VALUE[sub](a[0], b[0], c[0])
+        return _f(min(max(v, 0.0), 1.0) if settings[0] else v)
+    if op == OP["RAMP"]:
+        return _ramp(a[0], sub == 1, *ramp)
+    if op == OP["INVERT"]:
+        t = b[0]
+        return (*(x + t * (1.0 - 2.0 * x) for x in a[:3]), a[3])
+    if op == OP["SEPARATE"]:
+        return _f(a[sub])
+    if op == OP["COMBINE"]:
+        return (a[0], b[0], c[0], 1.0)
+    if op == OP["GRAY"]:
+        return _f(_gray(a, sub))
+    if op == OP["CLAMP"]:
+        lo, hi = (b[0], c[0]) if sub == 0 else (min(b[0], c[0]), max(b[0], c[0]))
+        return _f(min(max(a[0], lo), hi))
+    raise ValueError(f"op {op}")
+
+
+def run(program, texel):
+    """{input: vec4} of a program's outputs at one texel: what material_program.glsl computes."""
+    regs = []
+
+    def value(ref):
+        return program.consts[ref] if ref < MAX_CONST else regs[ref - MAX_CONST]
+    for op, a, b, c, sub, s1, s2, s3 in program.code:
+        ramp = None
+        if op == OP["RAMP"]:
+            n, first, pos = int(s1), int(s2), int(s3)
+            ramp = ([program.consts[pos + k // 4][k % 4] for k in range(n)], [program.consts[first + k] for k in range(n)])
+        regs.append(apply(op, sub, (s1, s2, s3), value(a), value(b), value(c), texel, ramp))
+    return {name: value(ref) for name, ref in program.outputs.items()}
+
+
+# ---- reading the tree ----
+
+def _describe(node):
+    label = node.label or node.name
+    return node.bl_label if label == node.bl_label else f"{node.bl_label} '{label}'"
+
+
+def _socket(node, identifier):
+    return next(s for s in node.inputs if s.identifier == identifier)
+
+
+def _default(socket):
+    v = socket.default_value
+    if socket.type == 'VALUE' or isinstance(v, (int, float)):
+        return _f(float(v))
+    v = tuple(float(x) for x in v)
+    return v + (1.0,) * (4 - len(v)) if len(v) < 4 else v[:4]
+
+
+class _Compiler:
+    """Values of sockets: ('const', vec4) or ('ref', operand); instructions appended as met."""
+
+    def __init__(self):
+        self.code, self.consts, self.image, self.memo = [], [], None, {}
+
+    def const_ref(self, v):
+        v = tuple(float(x) for x in v)
+        if v in self.consts:
+            return self.consts.index(v)
+        return self._alloc([v])
+
+    def _alloc(self, values):
+        if len(self.consts) + len(values) > MAX_CONST:
+            raise Unsupported(f"more than {MAX_CONST} constants in its chains")
+        self.consts.extend(values)
+        return len(self.consts) - len(values)
+
+    def ref(self, val):
+        return self.const_ref(val[1]) if val[0] == 'const' else val[1]
+
+    def emit(self, op, sub=0, settings=(0.0, 0.0, 0.0), a=('const', _f(0.0)), b=('const', _f(0.0)),
+             c=('const', _f(0.0)), ramp=None):
+        """An instruction, or its value when every operand is a constant (folded by `apply`)."""
+        if op != OP["IMAGE"] and all(v[0] == 'const' for v in (a, b, c)):
+            return ('const', apply(op, sub, settings, a[1], b[1], c[1], ramp=ramp))
+        if len(self.code) >= MAX_CODE:
+            raise Unsupported(f"more than {MAX_CODE} nodes drawn per pixel")
+        s1, s2, s3 = settings
+        if ramp is not None:
+            positions, colours = ramp
+            s1 = float(len(positions))
+            s2 = float(self._alloc([tuple(c_) for c_ in colours]))
+            padded = list(positions) + [0.0] * (-len(positions) % 4)
+            s3 = float(self._alloc([tuple(padded[i:i + 4]) for i in range(0, len(padded), 4)]))
+        self.code.append((op, self.ref(a), self.ref(b), self.ref(c), sub, s1, s2, s3))
+        return ('ref', MAX_CONST + len(self.code) - 1)
+
+    def input(self, socket):
+        """The value of an input socket: its link's, converted to its type, or its own."""
+        if not socket.is_linked:
+            return ('const', _default(socket))
+        link = socket.links[0]
+        if not link.is_valid or getattr(link, "is_muted", False):
+            return ('const', _default(socket))
+        node, out = link.from_node, link.from_socket
+        while node.type == 'REROUTE':
+            if not node.inputs[0].is_linked:
+                return ('const', _default(socket))
+            link = node.inputs[0].links[0]
+            node, out = link.from_node, link.from_socket
+        val = self.output(node, out)
+        if socket.type == 'VALUE' and out.type in {'RGBA', 'VECTOR'}:
+            val = self.emit(OP["GRAY"], 0 if out.type == 'RGBA' else 1, a=val)
+        return val
+
+    def output(self, node, out):
+        key = (node.as_pointer(), out.identifier)
+        if key not in self.memo:
+            if node.mute:
+                raise Unsupported(f"{_describe(node)} is muted")
+            self.memo[key] = self._node(node, out)
+        return self.memo[key]
+
+    def _node(self, node, out):
+        t = node.type
+        if t in {'RGB', 'VALUE'}:
+            return ('const', _default(out))
+        if t == 'TEX_IMAGE':
+            return self._image(node, out)
+        if t == 'MIX_RGB':
+            self._blend_known(node.blend_type, node)
+            return self.emit(OP["MIX"], MIX[node.blend_type], (1.0, float(node.use_clamp), 0.0),
+                             self.input(node.inputs["Color1"]), self.input(node.inputs["Color2"]),
+                             self.input(node.inputs["Fac"]))
+        if t == 'MIX':
+            return self._mix(node)
+        if t == 'MATH':
+            if node.operation not in MATH:
+                raise Unsupported(f"{_describe(node)}: its operation {node.operation}")
+            i = node.inputs
+            return self.emit(OP["MATH"], MATH[node.operation], (float(node.use_clamp), 0.0, 0.0),
+                             self.input(i[0]), self.input(i[1]), self.input(i[2]) if len(i) > 2 else ('const', _f(0.0)))
+        if t == 'VALTORGB':
+            return self._ramp(node, out)
+        if t == 'INVERT':
+            return self.emit(OP["INVERT"], 0, a=self.input(node.inputs["Color"]), b=self.input(node.inputs["Fac"]))
+        if t in {'SEPRGB', 'SEPXYZ', 'SEPARATE_COLOR'}:
+            if getattr(node, "mode", 'RGB') != 'RGB':
+                raise Unsupported(f"{_describe(node)}: its mode {node.mode}")
+            channel = [o.identifier for o in node.outputs].index(out.identifier)
+            return self.emit(OP["SEPARATE"], channel, a=self.input(node.inputs[0]))
+        if t in {'COMBRGB', 'COMBXYZ', 'COMBINE_COLOR'}:
+            if getattr(node, "mode", 'RGB') != 'RGB':
+                raise Unsupported(f"{_describe(node)}: its mode {node.mode}")
+            i = node.inputs
+            return self.emit(OP["COMBINE"], 0, a=self.input(i[0]), b=self.input(i[1]), c=self.input(i[2]))
+        if t == 'CLAMP':
+            return self.emit(OP["CLAMP"], 0 if node.clamp_type == 'MINMAX' else 1, a=self.input(node.inputs["Value"]),
+                             b=self.input(node.inputs["Min"]), c=self.input(node.inputs["Max"]))
+        raise Unsupported(_describe(node))
+
+    @staticmethod
+    def _blend_known(blend, node):
+        if blend not in MIX:
+            raise Unsupported(f"{_describe(node)}: its blend {blend.title().replace('_', ' ')}")
+
+    def _mix(self, node):
+        kind = node.data_type
+        if kind == 'VECTOR' and node.factor_mode != 'UNIFORM':
+            raise Unsupported(f"{_describe(node)}: a non-uniform factor")
+        if kind not in {'FLOAT', 'VECTOR', 'RGBA'}:
+            raise Unsupported(f"{_describe(node)}: its type {kind}")
+        suffix = {"FLOAT": "Float", "VECTOR": "Vector", "RGBA": "Color"}[kind]
+        blend = node.blend_type if kind == 'RGBA' else 'MIX'
+        self._blend_known(blend, node)
+        clamp_result = float(kind == 'RGBA' and node.clamp_result)
+        return self.emit(OP["MIX"], MIX[blend], (float(node.clamp_factor), clamp_result, 0.0),
+                         self.input(_socket(node, "A_" + suffix)), self.input(_socket(node, "B_" + suffix)),
+                         self.input(_socket(node, "Factor_Float")))
+
+    def _ramp(self, node, out):
+        ramp = node.color_ramp
+        if ramp.color_mode != 'RGB' or ramp.interpolation not in {'LINEAR', 'CONSTANT'}:
+            what = ramp.interpolation if ramp.color_mode == 'RGB' else ramp.color_mode
+            raise Unsupported(f"{_describe(node)}: its {what.title()} interpolation")
+        stops = sorted(((float(e.position), tuple(float(x) for x in e.color)) for e in ramp.elements),
+                       key=lambda s: s[0])
+        if len(stops) > MAX_STOPS:
+            raise Unsupported(f"{_describe(node)}: more than {MAX_STOPS} stops")
+        val = self.emit(OP["RAMP"], int(ramp.interpolation == 'LINEAR'), a=self.input(node.inputs["Fac"]),
+                        ramp=([p for p, _ in stops], [c for _, c in stops]))
+        return self.emit(OP["SEPARATE"], 3, a=val) if out.name == "Alpha" else val
+
+    def _image(self, node, out):
+        source = material_inputs.image_node_input(node)
+        if source is None:
+            raise Unsupported(f"{_describe(node)}: {material_inputs.image_node_problem(node)}")
+        if self.image is not None and source != self.image:
+            raise Unsupported(f"{_describe(node)}: a second image ('{self.image.image.name}' is drawn)")
+        self.image = source
+        return self.emit(OP["IMAGE"], 1 if out.name == "Alpha" else 0)
+
+
+@dataclass(frozen=True)
+class Chains:
+    """What a Principled BSDF's linked inputs come to: `values` {input: vec4} of the chains
+    folded here; `program` the node program of those drawn per pixel (its image None: none);
+    `unread` [(short, long)] of the chains EdgeLight cannot draw (their sockets' values drawn)."""
+    values: dict
+    program: Program
+    unread: list
+
+
+def read(node, names):
+    """The chains into the Principled BSDF `node`'s inputs `names` (those present and linked)."""
+    comp, values, outputs, unread = _Compiler(), {}, {}, []
+    for name in names:
+        socket = node.inputs.get(name)
+        if socket is None or not socket.is_linked:
+            continue
+        trial = _Compiler()
+        trial.code, trial.consts, trial.image, trial.memo = list(comp.code), list(comp.consts), comp.image, dict(comp.memo)
+        try:
+            val = trial.input(socket)
+            if val[0] == 'ref' and name not in PER_PIXEL:
+                first = _describe(socket.links[0].from_node)
+                raise Unsupported(f"{first}: an image, drawn only into Base Color, Metallic and Roughness")
+        except Unsupported as e:
+            unread.append((name, str(e)))
+            continue
+        comp = trial
+        if val[0] == 'const':
+            values[name] = val[1]
+        else:
+            outputs[name] = val[1]
+    if not outputs:
+        return Chains(values, Program(), unread)
+    for name in PER_PIXEL:  # the program gives all three; those not drawn per pixel as constants
+        if name not in outputs:
+            outputs[name] = comp.const_ref(values[name] if name in values else _default(node.inputs[name]))
+    return Chains(values, Program(tuple(comp.code), tuple(comp.consts), outputs, comp.image), unread)

@@ -1,0 +1,274 @@
+"""Node chains into the Principled BSDF (node_program.py, material_program.glsl): Mix (each
+blend, 3.4's Mix RGB too), Math (each operation), ColorRamp, Invert, Separate and Combine, Clamp
+and Blender's conversions, from an image per pixel and folded without one. Each chain is drawn
+on a strip of a quad seen from above under a white world with no light and Specular 0, so the
+pixel is the albedo, base colour x (1 - metallic). Held two ways at each texel's centre: to the
+add-on's own ops (node_program.run: the GLSL to the Python) within 1e-3 (the targets hold half floats), and to Cycles rendering
+the same chain into an Emission shader (Blender's node semantics) within 0.01."""
+import unittest
+
+import bpy
+import numpy as np
+
+import helpers
+from test_world_light import cycles_pixels
+
+# Opaque: Blender holds a float image's pixels premultiplied, which Cycles and EEVEE read by the
+# image's alpha mode, and EdgeLight does not yet (docs/addon.md, "Node chains").
+TEXELS = np.array([[0.1, 0.5, 0.9, 1.0], [0.8, 0.2, 0.05, 1.0], [1.5, 0.0, 0.4, 1.0], [0.45, 0.7, 0.25, 1.0]],
+                  np.float32)
+STRIP_PX, WIDTH = 12, 128
+B_COLOR = (0.3, 0.6, 0.9, 1.0)
+
+
+def _mix(tree, tex, blend, legacy=False):
+    n = tree.nodes
+    if legacy:
+        m = n.new('ShaderNodeMixRGB')
+        m.blend_type = blend
+        m.inputs["Fac"].default_value = 0.6
+        tree.links.new(tex.outputs["Color"], m.inputs["Color1"])
+        m.inputs["Color2"].default_value = B_COLOR
+        return m.outputs["Color"]
+    m = n.new('ShaderNodeMix')
+    m.data_type, m.blend_type, m.clamp_factor = 'RGBA', blend, True
+    sock = {s.identifier: s for s in m.inputs}
+    sock["Factor_Float"].default_value = 0.6
+    tree.links.new(tex.outputs["Color"], sock["A_Color"])
+    sock["B_Color"].default_value = B_COLOR
+    return next(s for s in m.outputs if s.identifier == "Result_Color")
+
+
+def _math(tree, tex, op, clamp=False):
+    m = tree.nodes.new('ShaderNodeMath')
+    m.operation, m.use_clamp = op, clamp
+    sep = tree.nodes.new('ShaderNodeSeparateColor' if bpy.app.version >= (3, 3, 0) else 'ShaderNodeSeparateRGB')
+    tree.links.new(tex.outputs["Color"], sep.inputs[0])
+    tree.links.new(tex.outputs["Color"], m.inputs[0])   # a colour into a float: its luminance
+    tree.links.new(sep.outputs[1], m.inputs[1])         # the green
+    m.inputs[2].default_value = 0.25
+    return m.outputs[0]
+
+
+def _ramp(tree, tex, interpolation):
+    r = tree.nodes.new('ShaderNodeValToRGB')
+    r.color_ramp.interpolation = interpolation
+    e = r.color_ramp.elements
+    e[0].position, e[0].color = 0.2, (0.9, 0.1, 0.2, 1.0)
+    e[1].position, e[1].color = 0.8, (0.1, 0.3, 1.0, 1.0)
+    mid = e.new(0.5)
+    mid.color = (0.2, 0.9, 0.3, 1.0)
+    tree.links.new(tex.outputs["Color"], r.inputs["Fac"])
+    return r.outputs["Color"]
+
+
+def _misc(tree, tex):
+    """Combine XYZ of: Separate Color's blue; an Invert's luminance; a Clamp (range) of the
+    luminance."""
+    n, link = tree.nodes, tree.links.new
+    sep = n.new('ShaderNodeSeparateXYZ')
+    link(tex.outputs["Color"], sep.inputs[0])
+    inv = n.new('ShaderNodeInvert')
+    inv.inputs["Fac"].default_value = 0.8
+    link(tex.outputs["Color"], inv.inputs["Color"])
+    clamp = n.new('ShaderNodeClamp')
+    clamp.clamp_type = 'RANGE'
+    clamp.inputs["Min"].default_value, clamp.inputs["Max"].default_value = 0.5, 0.2
+    link(tex.outputs["Color"], clamp.inputs["Value"])
+    comb = n.new('ShaderNodeCombineXYZ')
+    link(sep.outputs["Z"], comb.inputs[0])
+    link(inv.outputs["Color"], comb.inputs[1])
+    link(clamp.outputs[0], comb.inputs[2])
+    return comb.outputs[0]
+
+
+def _folded(tree, tex):
+    """No image: an RGB times a Value's square (Mix Multiply), folded on the CPU."""
+    n, link = tree.nodes, tree.links.new
+    rgb, val, sq = n.new('ShaderNodeRGB'), n.new('ShaderNodeValue'), n.new('ShaderNodeMath')
+    rgb.outputs[0].default_value = (0.7, 0.4, 0.2, 1.0)
+    val.outputs[0].default_value = 0.8
+    sq.operation = 'POWER'
+    sq.inputs[1].default_value = 2.0
+    link(val.outputs[0], sq.inputs[0])
+    m = n.new('ShaderNodeMixRGB')
+    m.blend_type, m.inputs["Fac"].default_value = 'MULTIPLY', 1.0
+    link(rgb.outputs[0], m.inputs["Color1"])
+    link(sq.outputs[0], m.inputs["Color2"])
+    return m.outputs["Color"]
+
+
+MIX_BLENDS = ('MIX', 'DARKEN', 'MULTIPLY', 'LIGHTEN', 'SCREEN', 'ADD', 'SUBTRACT', 'DIVIDE', 'DIFFERENCE',
+              'OVERLAY', 'LINEAR_LIGHT')
+MATH_OPS = ('ADD', 'SUBTRACT', 'MULTIPLY', 'DIVIDE', 'MULTIPLY_ADD', 'POWER', 'SQRT', 'ABSOLUTE', 'MINIMUM',
+            'MAXIMUM', 'LESS_THAN', 'GREATER_THAN', 'ROUND', 'FLOOR', 'CEIL', 'FRACT', 'SINE', 'COSINE',
+            'EXPONENT', 'SIGN', 'TRUNC')
+CHAINS = ([(f"mix {b}", lambda t, x, b=b: _mix(t, x, b)) for b in MIX_BLENDS]
+          + [("mix rgb OVERLAY", lambda t, x: _mix(t, x, 'OVERLAY', legacy=True)),
+             ("mix rgb DIVIDE", lambda t, x: _mix(t, x, 'DIVIDE', legacy=True))]
+          + [(f"math {op}", lambda t, x, op=op: _math(t, x, op)) for op in MATH_OPS]
+          + [("math POWER clamped", lambda t, x: _math(t, x, 'POWER', clamp=True)),
+             ("ramp LINEAR", lambda t, x: _ramp(t, x, 'LINEAR')), ("ramp CONSTANT", lambda t, x: _ramp(t, x, 'CONSTANT')),
+             ("separate, invert, clamp, combine", _misc), ("folded", _folded)])
+
+
+def strips_scene(chains, metallic_strip=False):
+    """One strip per chain (top to bottom), each a plane with the chain into its Base Color (for
+    EdgeLight) and into an Emission (for Cycles), read from a 4 x 1 float image, Closest. With
+    `metallic_strip`, a last strip whose Metallic is the image's red."""
+    count = len(chains) + int(metallic_strip)
+    scene = helpers.empty_scene(WIDTH, STRIP_PX * count, highlights=False)
+    helpers.set_world_color(scene, (1.0, 1.0, 1.0))
+    height = 2.0 * STRIP_PX * count / WIDTH
+    cam = helpers.add_camera((0.0, 0.0, 20.0), (0.0, 0.0, 0.0))
+    cam.rotation_euler = (0.0, 0.0, 0.0)
+    cam.data.type, cam.data.ortho_scale, cam.data.clip_end = 'ORTHO', max(2.0, height), 40.0
+    img = bpy.data.images.new("Texels", 4, 1, alpha=True, float_buffer=True)
+    img.pixels.foreach_set(TEXELS.reshape(-1))
+    pairs = []
+    for k in range(count):
+        bpy.ops.mesh.primitive_plane_add(size=2.0, location=(0.0, height / 2.0 - (k + 0.5) * height / count, 0.0))
+        ob = bpy.context.object
+        ob.scale = (1.0, 1.0 / count * height / 2.0, 1.0)
+        build = chains[k][1] if k < len(chains) else (lambda t, x: x.outputs["Color"])
+        setup = chains[k][2] if k < len(chains) and len(chains[k]) > 2 else None
+        mats = []
+        for kind in ("principled", "emission"):
+            mat = bpy.data.materials.new(f"{kind} {k}")
+            mat.use_nodes = True
+            tree = mat.node_tree
+            out = next(n for n in tree.nodes if n.type == 'OUTPUT_MATERIAL')
+            bsdf = next(n for n in tree.nodes if n.type == 'BSDF_PRINCIPLED')
+            tex = tree.nodes.new('ShaderNodeTexImage')
+            tex.image, tex.interpolation = img, 'Closest'
+            sock = build(tree, tex)
+            if kind == "principled":
+                for name in ("Specular", "Specular IOR Level"):
+                    if name in bsdf.inputs:
+                        bsdf.inputs[name].default_value = 0.0
+                tree.links.new(sock, bsdf.inputs["Base Color"])
+                if setup is not None:
+                    setup(tree, tex, bsdf)
+                if k == len(chains):
+                    sep = tree.nodes.new('ShaderNodeSeparateXYZ')
+                    tree.links.new(tex.outputs["Color"], sep.inputs[0])
+                    tree.links.new(sep.outputs["X"], bsdf.inputs["Metallic"])
+            else:
+                tree.nodes.remove(bsdf)
+                em = tree.nodes.new('ShaderNodeEmission')
+                tree.links.new(sock, em.inputs["Color"])
+                tree.links.new(em.outputs[0], out.inputs["Surface"])
+            mats.append(mat)
+        ob.data.materials.append(mats[0])
+        pairs.append((ob, mats))
+    return scene, pairs
+
+
+def centres(px, count):
+    """(strip, texel) -> the pixel at the texel's centre (rows top-down in the strips' order)."""
+    out = np.zeros((count, 4, 3))
+    for k in range(count):
+        row = px.shape[0] - 1 - (k * STRIP_PX + STRIP_PX // 2)  # rows bottom-up
+        for t in range(4):
+            out[k, t] = px[row, (2 * t + 1) * WIDTH // 8, :3]
+    return out
+
+
+class NodeChains(unittest.TestCase):
+    def setUp(self):
+        helpers.needs_gpu()
+
+    def test_chains_as_the_ops_and_as_cycles_draw_them(self):
+        scene, pairs = strips_scene(CHAINS, metallic_strip=True)
+        el = helpers.addon()
+        rec = helpers.render()
+        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+        ours = centres(rec["pixels"], len(pairs))
+        # The GLSL against the add-on's Python ops, at each texel.
+        # The lobe's albedo under the white world (helpers.env_specular): Specular 0 still
+        # reflects at grazing angles, nearly nothing seen from above.
+        n = el.materials.shininess_from_roughness(0.5)
+        worst, albedo, negative = 0.0, np.zeros_like(ours), np.zeros(ours.shape[:2], bool)
+        for k, (_ob, mats) in enumerate(pairs):
+            s = el.materials.shading_of(mats[0])
+            for t in range(4):
+                if s.texture is None:  # folded: the Shading's own albedo
+                    albedo[k, t], f0 = s.base_color, np.array(s.spec_color)
+                else:
+                    got = el.node_program.run(s.texture.program, tuple(TEXELS[t]))
+                    m = min(max(got["Metallic"][0], 0.0), 1.0)
+                    base = np.array(got["Base Color"][:3])
+                    negative[k, t] = base.min() < 0.0
+                    base = np.maximum(base, 0.0)  # no negative albedo
+                    albedo[k, t], f0 = base * (1.0 - m), base * m
+                want = albedo[k, t] + helpers.env_specular(f0, n, 1.0)
+                # Relative: the colour target holds half floats (11 bits).
+                err = float((np.abs(ours[k, t] - want) / np.maximum(np.abs(want), 1.0)).max())
+                worst = max(worst, err)
+                self.assertLess(err, 1e-3, f"{pairs[k][1][0].name} texel {t}: drawn {ours[k, t]}, ops {want}")
+        print(f"node program against node_program.run: worst relative {worst:.2e} over {len(pairs)} strips x 4 texels")
+        # The metallic strip: the image's red as Metallic takes that share of the albedo.
+        red = TEXELS[:, 0].clip(0.0, 1.0)
+        np.testing.assert_allclose(albedo[-1], TEXELS[:, :3] * (1.0 - red)[:, None], atol=1e-6)
+        # The chains against Cycles' Emission of the same chain.
+        for _ob, mats in pairs[:len(CHAINS)]:
+            _ob.data.materials[0] = mats[1]
+        theirs = centres(cycles_pixels(scene, samples=1), len(pairs))
+        rows = []
+        for k, (name, _build) in enumerate(CHAINS):
+            for t in range(4):
+                if negative[k, t]:
+                    continue  # Cycles' Emission keeps a negative colour; the albedo does not
+                err = float(np.abs(albedo[k, t] - theirs[k, t]).max())
+                rows.append(err)
+                self.assertLess(err, 0.01, f"{name} texel {t}: EdgeLight {ours[k, t]}, Cycles {theirs[k, t]}")
+        print(f"node chains against Cycles: worst {max(rows):.4f}, mean {np.mean(rows):.5f} "
+              f"over {len(rows)} of {len(CHAINS)} chains x 4 texels (the others negative)")
+        self.assertGreater(len(rows), 3 * len(CHAINS))
+
+    def test_a_second_image_and_an_unknown_node_are_said(self):
+        scene, pairs = strips_scene([("image", lambda t, x: x.outputs["Color"])])
+        mat = pairs[0][1][0]
+        tree = mat.node_tree
+        bsdf = next(n for n in tree.nodes if n.type == 'BSDF_PRINCIPLED')
+        other = tree.nodes.new('ShaderNodeTexImage')
+        other.image = bpy.data.images.new("Other", 2, 2)
+        tree.links.new(other.outputs["Color"], bsdf.inputs["Roughness"])
+        gamma = tree.nodes.new('ShaderNodeGamma')
+        tree.links.new(gamma.outputs[0], bsdf.inputs["Metallic"])
+        lines = [m for level, m in helpers.render().get("messages", []) if level == 'WARNING']
+        self.assertEqual(len(lines), 1, lines)
+        self.assertIn("Roughness from Image Texture 'Image Texture.001': a second image ('Texels' is drawn)", lines[0])
+        self.assertIn("Metallic from Gamma (its value", lines[0])
+
+
+def _rough_metal(tree, tex, bsdf):
+    """Metallic 1, Roughness the image's green."""
+    bsdf.inputs["Metallic"].default_value = 1.0
+    sep = tree.nodes.new('ShaderNodeSeparateXYZ')
+    tree.links.new(tex.outputs["Color"], sep.inputs[0])
+    tree.links.new(sep.outputs["Y"], bsdf.inputs["Roughness"])
+
+
+class RoughnessPerPixel(unittest.TestCase):
+    def setUp(self):
+        helpers.needs_gpu()
+
+    def test_a_roughness_map_on_a_metal(self):
+        """A metal whose roughness is the image's green, under the white world: each texel's
+        colour is the lobe's albedo at its own exponent (helpers.env_specular), not at the
+        image's mean roughness."""
+        _scene, pairs = strips_scene([("rough metal", lambda t, x: x.outputs["Color"], _rough_metal)])
+        el = helpers.addon()
+        ours = centres(helpers.render()["pixels"], 1)[0]
+        for t in range(4):
+            base = np.clip(TEXELS[t, :3], 0.0, None)
+            n = el.materials.shininess_from_roughness(float(TEXELS[t, 1]))
+            want = helpers.env_specular(base, n, 1.0)
+            at_mean = helpers.env_specular(base, el.materials.shininess_from_roughness(float(TEXELS[:, 1].mean())), 1.0)
+            print(f"texel {t}: drawn {ours[t]}, at its roughness {want}, at the mean roughness {at_mean}")
+            np.testing.assert_allclose(ours[t], want, rtol=1e-3, atol=1e-4)
+
+
+if __name__ == "__main__":
+    unittest.main()
