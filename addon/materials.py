@@ -57,13 +57,13 @@ class Shading:
 
 @dataclass(frozen=True)
 class BaseTexture:
-    """An image in a material's node chains into Base Color, Metallic or Roughness, as the
-    surface pass, the bands and the corner patches draw it (EL_BASE_TEXTURE): its node program
-    (node_program.Program) gives base colour, metallic and roughness per pixel, split as
-    shading_of splits the values. The Shading's own colours take the program at the image's
-    mean colour, for what draws the material without the image (toon shading, its default ramp
-    stops)."""
-    source: object         # material_inputs.ImageInput
+    """An image or a colour attribute in a material's node chains into Base Color, Metallic or
+    Roughness, as the surface pass, the bands and the corner patches draw it (EL_BASE_TEXTURE):
+    its node program (node_program.Program) gives base colour, metallic and roughness per pixel,
+    split as shading_of splits the values. The Shading's own colours take the program at the
+    image's mean colour (and a white attribute), for what draws the material without them (toon
+    shading, its default ramp stops)."""
+    source: object         # material_inputs.ImageInput, or None: the program reads no image
     program: object        # node_program.Program
     f0: float              # the dielectric F0: 0.08 x Specular
     shininess: float = -1.0  # the material's own Blinn exponent (Custom Shininess); -1: from roughness
@@ -150,8 +150,9 @@ def shading_of(material):
         base = folded.color("Base Color", DEFAULT_COLOR)
         roughness = folded.scalar(0.5, "Roughness")
         metallic = folded.scalar(0.0, "Metallic")
-        if image is not None:  # the program at the image's mean colour
-            at_mean = node_program.run(program, (*textures.mean_color(image.image), 1.0))
+        if program.outputs:  # the program at the image's mean colour, under a white attribute
+            mean = (*textures.mean_color(image.image), 1.0) if image is not None else (0.0,) * 4
+            at_mean = node_program.run(program, mean, (1.0, 1.0, 1.0, 1.0))
             base = tuple(at_mean["Base Color"][:3])
             metallic, roughness = at_mean["Metallic"][0], at_mean["Roughness"][0]
         # As the Principled BSDF takes them (material_program.glsl): no negative albedo.
@@ -175,18 +176,19 @@ def shading_of(material):
     s = material.edgelight
     n = s.shininess if s.use_custom_shininess else shininess_from_roughness(roughness)
     toon, note = usable_toon(material.name, toon_of(s, base))
-    if image is not None and toon.mode != PHONG.mode:
-        # Toon shading draws no image (surface_pass.texture_key): said, as what is not drawn is.
+    if node is not None and program.outputs and toon.mode != PHONG.mode:
+        # Toon shading draws no node program (surface_pass.texture_key): said, as what is not drawn is.
         cut = " (and its alpha cuts nothing)" if material_inputs.image_alpha(node, image) else ""
-        note = "; ".join(n for n in (note, f"material '{material.name}': its image '{image.image.name}' is drawn as its "
-                                           f"mean colour under toon shading{cut}") if n)
+        what = (f"its image '{image.image.name}' is drawn as its mean colour" if image is not None
+                else "its colour attribute is drawn as white")
+        note = "; ".join(n for n in (note, f"material '{material.name}': {what} under toon shading{cut}") if n)
     note = "; ".join(n for n in (material_inputs.note(material, unread(material)), note) if n)
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.
     alpha_mode, threshold, alpha_note = _alpha_mode(material, node, image)
     note = "; ".join(n for n in (note, alpha_note) if n)
     texture = (BaseTexture(image, program, f0, float(n) if s.use_custom_shininess else -1.0, alpha_mode, threshold)
-               if image is not None else None)
+               if program is not None and program.outputs else None)
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full,
                    int(material.pass_index), texture, emission)

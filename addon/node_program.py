@@ -1,10 +1,11 @@
 """Node chains into a Principled BSDF's inputs (docs/addon.md, "Node chains"): RGB, Value, Mix
-(and 3.4's Mix RGB), Math, ColorRamp, Invert, Separate and Combine (RGB, Color, XYZ), Clamp and
-one image (Image Texture), with Blender's implicit conversions between colours, vectors and
-floats. The one description of the ops is shaders/material_data.json (EL_OP, EL_MIX, EL_MATH);
-`apply` here and material_program.glsl implement it the same way, which a test pins
-(test_node_program). A chain without the image is folded here into its value; one with it
-becomes the node program the surface, band and corner programs run per pixel (EL_BASE_TEXTURE).
+(and 3.4's Mix RGB), Math, ColorRamp, Invert, Separate and Combine (RGB, Color, XYZ), Clamp, one
+image (Image Texture) and one colour attribute (Color Attribute, or an Attribute node naming
+one), with Blender's implicit conversions between colours, vectors and floats. The one
+description of the ops is shaders/material_data.json (EL_OP, EL_MIX, EL_MATH); `apply` here and
+material_program.glsl implement it the same way, which a test pins (test_node_program). A chain
+without the image or the attribute is folded here into its value; one with either becomes the
+node program the surface, band and corner programs run per pixel (EL_BASE_TEXTURE).
 """
 import math
 from dataclasses import dataclass, field
@@ -32,12 +33,14 @@ class Unsupported(Exception):
 class Program:
     """A material's node program. `code`: ((op, a, b, c, sub, s1, s2, s3), ...); operands below
     MAX_CONST index `consts`, from it the result of instruction (operand - MAX_CONST).
-    `outputs`: {input: operand} of PER_PIXEL inputs fed by the image. `image`: the
-    material_inputs.ImageInput its IMAGE ops read (None: no program)."""
+    `outputs`: {input: operand} of the PER_PIXEL inputs (empty: no program). `image`: the
+    material_inputs.ImageInput its IMAGE ops read, or None. `attribute`: the colour attribute its
+    ATTRIBUTE ops read ("": the mesh's render colour attribute), or None."""
     code: tuple = ()
     consts: tuple = ()
     outputs: dict = field(default_factory=dict)
     image: object = None
+    attribute: str = None
 
 
 # ---- the ops, as material_program.glsl computes them (vec4 values; a float is (f, f, f, 1)) ----
@@ -130,10 +133,15 @@ def _clamp01(v):
     return tuple(min(max(c, 0.0), 1.0) for c in v[:3]) + (v[3],)
 
 
-def apply(op, sub, settings, a, b, c, texel=(0.0, 0.0, 0.0, 0.0), ramp=None):
-    """One instruction's value from its operands' (vec4 tuples); `ramp`: (positions, colours)."""
+def apply(op, sub, settings, a, b, c, texel=(0.0, 0.0, 0.0, 0.0), ramp=None, color=(0.0, 0.0, 0.0, 0.0)):
+    """One instruction's value from its operands' (vec4 tuples); `ramp`: (positions, colours);
+    `texel` and `color`: the image's and the colour attribute's value."""
     if op == OP["IMAGE"]:
         return _f(texel[3]) if sub == 1 else tuple(texel)
+    if op == OP["ATTRIBUTE"]:
+        if sub == 1:
+            return _f(color[3])
+        return _f(sum(color[:3]) / 3.0) if sub == 2 else (*color[:3], 1.0)
     if op == OP["MIX"]:
         t = min(max(c[0], 0.0), 1.0) if settings[0] else c[0]
         out = _blend(sub, a, b, t)
@@ -158,8 +166,9 @@ def apply(op, sub, settings, a, b, c, texel=(0.0, 0.0, 0.0, 0.0), ramp=None):
     raise ValueError(f"op {op}")
 
 
-def run(program, texel):
-    """{input: vec4} of a program's outputs at one texel: what material_program.glsl computes."""
+def run(program, texel, color=(0.0, 0.0, 0.0, 0.0)):
+    """{input: vec4} of a program's outputs at one texel and colour attribute value: what
+    material_program.glsl computes."""
     regs = []
 
     def value(ref):
@@ -169,7 +178,7 @@ def run(program, texel):
         if op == OP["RAMP"]:
             n, first, pos = int(s1), int(s2), int(s3)
             ramp = ([program.consts[pos + k // 4][k % 4] for k in range(n)], [program.consts[first + k] for k in range(n)])
-        regs.append(apply(op, sub, (s1, s2, s3), value(a), value(b), value(c), texel, ramp))
+        regs.append(apply(op, sub, (s1, s2, s3), value(a), value(b), value(c), texel, ramp, color))
     return {name: value(ref) for name, ref in program.outputs.items()}
 
 
@@ -196,7 +205,7 @@ class _Compiler:
     """Values of sockets: ('const', vec4) or ('ref', operand); instructions appended as met."""
 
     def __init__(self):
-        self.code, self.consts, self.image, self.memo = [], [], None, {}
+        self.code, self.consts, self.image, self.attribute, self.memo = [], [], None, None, {}
 
     def const_ref(self, v):
         v = tuple(float(x) for x in v)
@@ -216,7 +225,7 @@ class _Compiler:
     def emit(self, op, sub=0, settings=(0.0, 0.0, 0.0), a=('const', _f(0.0)), b=('const', _f(0.0)),
              c=('const', _f(0.0)), ramp=None):
         """An instruction, or its value when every operand is a constant (folded by `apply`)."""
-        if op != OP["IMAGE"] and all(v[0] == 'const' for v in (a, b, c)):
+        if op not in {OP["IMAGE"], OP["ATTRIBUTE"]} and all(v[0] == 'const' for v in (a, b, c)):
             return ('const', apply(op, sub, settings, a[1], b[1], c[1], ramp=ramp))
         if len(self.code) >= MAX_CODE:
             raise Unsupported(f"more than {MAX_CODE} nodes drawn per pixel")
@@ -262,6 +271,8 @@ class _Compiler:
             return ('const', _default(out))
         if t == 'TEX_IMAGE':
             return self._image(node, out)
+        if t in {'VERTEX_COLOR', 'ATTRIBUTE'}:
+            return self._attribute(node, out)
         if t == 'MIX_RGB':
             self._blend_known(node.blend_type, node)
             return self.emit(OP["MIX"], MIX[node.blend_type], (1.0, float(node.use_clamp), 0.0),
@@ -335,11 +346,27 @@ class _Compiler:
         self.image = source
         return self.emit(OP["IMAGE"], 1 if out.name == "Alpha" else 0)
 
+    def _attribute(self, node, out):
+        """A Color Attribute node, or an Attribute node of the geometry (its name must be a
+        colour attribute of the mesh: scene_sync says where it is not). Outputs: Color and
+        Vector, Alpha, Fac (the colour's mean)."""
+        if node.type == 'ATTRIBUTE':
+            if node.attribute_type != 'GEOMETRY' or not node.attribute_name:
+                raise Unsupported(f"{_describe(node)}: its {node.attribute_type.title().replace('_', ' ')} attribute")
+            name = node.attribute_name
+        else:
+            name = node.layer_name
+        if self.attribute is not None and name != self.attribute:
+            raise Unsupported(f"{_describe(node)}: a second colour attribute ('{self.attribute or 'the render one'}' is drawn)")
+        self.attribute = name
+        # Fac is Factor from 5.0: a float output other than Alpha.
+        return self.emit(OP["ATTRIBUTE"], 1 if out.name == "Alpha" else (2 if out.type == 'VALUE' else 0))
+
 
 @dataclass(frozen=True)
 class Chains:
     """What a Principled BSDF's linked inputs come to: `values` {input: vec4} of the chains
-    folded here; `program` the node program of those drawn per pixel (its image None: none);
+    folded here; `program` the node program of those drawn per pixel (its outputs empty: none);
     `unread` [(short, long)] of the chains EdgeLight cannot draw (their sockets' values drawn)."""
     values: dict
     program: Program
@@ -354,12 +381,13 @@ def read(node, names):
         if socket is None or not socket.is_linked:
             continue
         trial = _Compiler()
-        trial.code, trial.consts, trial.image, trial.memo = list(comp.code), list(comp.consts), comp.image, dict(comp.memo)
+        trial.code, trial.consts, trial.memo = list(comp.code), list(comp.consts), dict(comp.memo)
+        trial.image, trial.attribute = comp.image, comp.attribute
         try:
             val = trial.input(socket)
             if val[0] == 'ref' and name not in PER_PIXEL:
                 first = _describe(socket.links[0].from_node)
-                raise Unsupported(f"{first}: an image, drawn only into Base Color, Metallic and Roughness")
+                raise Unsupported(f"{first}: per pixel, drawn only into Base Color, Metallic and Roughness")
         except Unsupported as e:
             unread.append((name, str(e)))
             continue
@@ -373,4 +401,4 @@ def read(node, names):
     for name in PER_PIXEL:  # the program gives all three; those not drawn per pixel as constants
         if name not in outputs:
             outputs[name] = comp.const_ref(values[name] if name in values else _default(node.inputs[name]))
-    return Chains(values, Program(tuple(comp.code), tuple(comp.consts), outputs, comp.image), unread)
+    return Chains(values, Program(tuple(comp.code), tuple(comp.consts), outputs, comp.image, comp.attribute), unread)

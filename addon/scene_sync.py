@@ -41,6 +41,7 @@ class MeshExtract:
     box: np.ndarray = None                      # (2, 3) object-space bounds of its surface
     corner_uv: dict = field(default_factory=dict)  # UV map name ("": active render) -> (3T, 2), for textured slots
     missing_uv: frozenset = frozenset()         # UV map names a slot's image asked for that the mesh lacks
+    corner_color: dict = field(default_factory=dict)  # colour attribute name ("": render) -> (3T, 4), for node programs
     # What is computed from the chosen edges (rounded_outline.from_edges: the fillets' outline
     # records), by name: (the edges it was computed from, the value). One dict shared by the
     # copies a render cache makes, so a reused extraction whose edges were not chosen again does
@@ -250,12 +251,14 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
         corner_nor = np.where(np.isfinite(corner_nor).all(axis=1, keepdims=True), corner_nor, flat)
     shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
     shading, corner_uv, missing_uv = textured_corners(name, mesh, shading, tri_loops)
+    shading, corner_color = colored_corners(name, mesh, shading, tri_loops, tri_poly)
     key = content = None
     if cache is not None or same_content is not None:
         digest = render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot, marks, bevel,
                                            tri_poly, polygons.start, polygons.total, polygons.loop_vert,
                                            polygons.loop_edge, corner_nor, *(corner_uv[k] for k in sorted(corner_uv)),
-                                           np.frombuffer(repr(sorted(corner_uv)).encode(), np.uint8)))
+                                           *(corner_color[k] for k in sorted(corner_color)),
+                                           np.frombuffer(repr((sorted(corner_uv), sorted(corner_color))).encode(), np.uint8)))
         # Shading follows from the materials alone within a render: their names decide.
         content = (id(lib), digest, tuple(s.material for s in shading))
         if same_content is not None and content in same_content:
@@ -283,7 +286,8 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     order = np.argsort(tri_slot, kind="stable")
     slot_triangles = {int(s): order[tri_slot[order] == s] for s in np.unique(tri_slot)}
     out = MeshExtract(name, positions[tri_verts.reshape(-1)], np.ascontiguousarray(corner_nor, np.float32),
-                      slot_triangles, shading, info=info, corner_uv=corner_uv, missing_uv=frozenset(missing_uv))
+                      slot_triangles, shading, info=info, corner_uv=corner_uv, missing_uv=frozenset(missing_uv),
+                      corner_color=corner_color)
     # The classification, kept so a material change can re-choose edges without a native call.
     # The id the surface pass writes for each triangle (passes/frame.py): its batch's first id
     # plus its place in the batch, since the slots' batches are drawn in this order.
@@ -349,7 +353,7 @@ def textured_corners(name, mesh, shading, tri_loops):
     without its image, and its note says so."""
     corner_uv, out, missing = {}, [], set()
     for s in shading:
-        if s.texture is not None:
+        if s.texture is not None and s.texture.source is not None:
             uv_name = s.texture.source.uv_map
             if uv_name not in corner_uv:
                 layer = mesh.uv_layers.get(uv_name) if uv_name else render_uv_layer(mesh)
@@ -363,6 +367,47 @@ def textured_corners(name, mesh, shading, tri_loops):
                 s = dataclasses.replace(s, texture=None, note="; ".join(n for n in (s.note, note) if n))
         out.append(s)
     return out, corner_uv, missing
+
+
+def color_attribute(mesh, name):
+    """The colour attribute a node program reads: the one named, or the mesh's render colour
+    attribute for "" (Blender's default when a Color Attribute node names none); None when the
+    mesh has no such colour attribute."""
+    colors = getattr(mesh, "color_attributes", None)
+    if colors is None:
+        return None
+    if name:
+        attr = colors.get(name)
+    else:
+        index = getattr(colors, "render_color_index", -1)
+        attr = colors[index] if 0 <= index < len(colors) else colors.active_color
+    return attr if attr is not None and attr.domain in {'POINT', 'CORNER', 'FACE'} else None
+
+
+def colored_corners(name, mesh, shading, tri_loops, tri_poly):
+    """(shading, {attribute name: (3T, 4) corner colours, scene-linear}) for the slots whose node
+    program reads a colour attribute. Where the mesh lacks it the program reads zero, as
+    Blender's nodes read a missing attribute, and the slot's note says so."""
+    corner_color, out = {}, []
+    for s in shading:
+        attr_name = s.texture.program.attribute if s.texture is not None else None
+        if attr_name is not None and attr_name not in corner_color:
+            attr = color_attribute(mesh, attr_name)
+            if attr is not None:
+                values = _foreach(attr.data, "color", np.float32, 4)
+                if attr.domain == 'POINT':
+                    index = _foreach(mesh.loops, "vertex_index", np.int64)[tri_loops.reshape(-1)]
+                elif attr.domain == 'CORNER':
+                    index = tri_loops.reshape(-1)
+                else:
+                    index = np.repeat(tri_poly, 3)
+                corner_color[attr_name] = np.ascontiguousarray(values[index])
+            else:
+                which = f"colour attribute '{attr_name}'" if attr_name else "colour attribute"
+                note = f"{name}: material '{s.material}' reads a {which} the mesh does not have; it reads black"
+                s = dataclasses.replace(s, note="; ".join(n for n in (s.note, note) if n))
+        out.append(s)
+    return out, corner_color
 
 
 def light_of(ob, matrix):

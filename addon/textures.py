@@ -64,3 +64,16 @@ def gpu_texture(image):
     """Blender's GPU texture of the image (it caches and frees it with the image)."""
     import gpu
     return gpu.texture.from_image(image)
+
+
+_placeholder = {}
+
+
+def no_image():
+    """A 1 x 1 texture bound where a node program reads no image (its sampler must be bound)."""
+    if "texture" not in _placeholder:
+        import gpu
+
+        from . import compat
+        _placeholder["texture"] = compat.texture((1, 1), 'RGBA32F', gpu.types.Buffer('FLOAT', 4, [0.0] * 4))
+    return _placeholder["texture"]

@@ -184,12 +184,13 @@ class ViewportState:
         changed. No native call: the classification is kept in the extract. The extract is
         replaced by a copy with the new shading and edges, never changed in place: what still
         holds the old one (the last instances, a render's scene) keeps a consistent one.
-        Returns False, changing nothing, when a slot's image now reads another UV map (or a
-        slot gained or lost one): the object is then extracted again."""
+        Returns False, changing nothing, when a slot's image now reads another UV map or its
+        program another colour attribute (or a slot gained or lost one): the object is then
+        extracted again."""
         ex = cache.extract
         shading = [shading_of(m) for m in materials] or [shading_of(None)]
-        if slot_uv_maps(shading, ex.missing_uv) != slot_uv_maps(ex.slot_shading):
-            return False  # the batches hold each slot's UVs for its image (batches.slot_uv)
+        if slot_corner_inputs(shading, ex.missing_uv) != slot_corner_inputs(ex.slot_shading):
+            return False  # the batches hold each slot's UVs and colours (batches.slot_uv, slot_colors)
         edges = edge_choice.choose_edges(ex.edge_data, shading)
         same = edge_choice.same_edges(edges, ex.edges)
         cache.materials = list(materials)
@@ -332,11 +333,14 @@ class ViewportState:
                 f" | cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}")
 
 
-def slot_uv_maps(shading, missing=frozenset()):
+def slot_corner_inputs(shading, missing=frozenset()):
     """Per slot, the UV map its image reads (None without one, or where it is among `missing`,
-    the maps the mesh lacked): what its surface batch's UVs are."""
-    return tuple(s.texture.source.uv_map if s.texture is not None and s.texture.source.uv_map not in missing else None
-                 for s in shading)
+    the maps the mesh lacked) and the colour attribute its node program reads (None without
+    one): what its batches' UVs and colours are."""
+    def uv(s):
+        source = s.texture.source if s.texture is not None else None
+        return source.uv_map if source is not None and source.uv_map not in missing else None
+    return tuple((uv(s), s.texture.program.attribute if s.texture is not None else None) for s in shading)
 
 
 def scene_signature(state, scene):

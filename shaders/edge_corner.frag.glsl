@@ -16,7 +16,7 @@ vec3 el_corner_colour(vec3 X, vec3 N, vec3 V)
   float n = spec_color.w;
 #ifdef EL_BASE_TEXTURE
   /* Under an image, its node program at the corner's vertex (material_program.glsl). */
-  ElMaterial m = el_material_at(corner_uv);
+  ElMaterial m = el_material_at(corner_uv, corner_col);
   albedo = m.albedo;
   f0 = m.f0;
   n = m.n;

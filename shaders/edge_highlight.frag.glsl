@@ -36,7 +36,8 @@ void main()
   vec3 V = el_safe_normalize(to_eye);
 
 #ifdef EL_BASE_TEXTURE
-  el_band_material = el_material_at(mix(edge_uv.xy, edge_uv.zw, clamp(edge_t, 0.0, 1.0)));
+  float along = clamp(edge_t, 0.0, 1.0);
+  el_band_material = el_material_at(mix(edge_uv.xy, edge_uv.zw, along), mix(edge_col0, edge_col1, along));
 #endif
   float world_per_px = dist / frame.camera.x;
   float across = dot(pc - edge_screen.xy, edge_screen.zw);

@@ -1,5 +1,5 @@
 /* The node program (shaders/material_data.json, addon/node_program.py): what a material's node
- * chains compute from its image, run per pixel by the surface, band and corner programs. The
+ * chains compute from its image and its colour attribute, run per pixel by the surface, band and corner programs. The
  * ops are EEVEE's node library's (mix_*, math_*, the colour band), in the add-on's own words in
  * node_program.apply, which a test holds this to. Operands below EL_MAT_CONST are the block's
  * constants, from it the results of earlier instructions. */
@@ -116,10 +116,16 @@ vec4 el_mat_ramp(float fac, bool linear, int count, int first, int pos)
   return el_mat_operand(float(first + count - 1));
 }
 
-vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 texel)
+vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 texel, vec4 col)
 {
   switch (op) {
     case EL_OP_IMAGE: return sub == 1 ? el_mat_float(texel.a) : texel;
+    case EL_OP_ATTRIBUTE: {
+      if (sub == 1) {
+        return el_mat_float(col.a);
+      }
+      return sub == 2 ? el_mat_float((col.r + col.g + col.b) / 3.0) : vec4(col.rgb, 1.0);
+    }
     case EL_OP_MIX: {
       float t = s.x > 0.5 ? clamp(c.x, 0.0, 1.0) : c.x;
       vec3 rgb = el_mat_blend(sub, a.rgb, b.rgb, t);
@@ -142,22 +148,22 @@ vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 texel)
   return vec4(0.0);
 }
 
-/* The Principled inputs at a point of the image's UV, as the surface reads them: albedo, F0 and
- * the Blinn exponent (materials.shading_of's split of base colour, metallic and roughness). */
+/* The Principled inputs at a point of the image's UV and of colour attribute `col`, as the
+ * surface reads them: albedo, F0 and the Blinn exponent (materials.shading_of's split of base colour, metallic and roughness). */
 struct ElMaterial {
   vec3 albedo;
   vec3 f0;
   float n;
 };
 
-ElMaterial el_material_at(vec2 uv)
+ElMaterial el_material_at(vec2 uv, vec4 col)
 {
   vec4 texel = el_base_texel(uv);
   int count = min(int(material.program.x + 0.5), EL_MAT_CODE);
   for (int i = 0; i < count; i++) {
     vec4 c = material.code[i], p = material.args[i];
     el_mat_reg[i] = el_mat_op(int(c.x + 0.5), int(p.x + 0.5), p.yzw, el_mat_operand(c.y), el_mat_operand(c.z),
-                              el_mat_operand(c.w), texel);
+                              el_mat_operand(c.w), texel, col);
   }
   vec3 base = max(el_mat_operand(material.outputs.x).rgb, 0.0); /* no negative albedo, as Cycles' Principled */
   float metallic = clamp(el_mat_operand(material.outputs.y).x, 0.0, 1.0);

@@ -95,7 +95,7 @@ void main()
 #ifdef EL_BASE_TEXTURE
   /* An image in the material's node chains (materials.BaseTexture): its node program gives the
    * albedo, F0 and exponent here (material_program.glsl). */
-  ElMaterial m = el_material_at(surface_uv);
+  ElMaterial m = el_material_at(surface_uv, surface_col);
   albedo = m.albedo;
   spec = m.f0;
   n = m.n;

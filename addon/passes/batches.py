@@ -33,16 +33,22 @@ def surface_buffers(extract):
         corners = (tris[:, None] * 3 + order).reshape(-1)
         sign = np.where(np.repeat(flipped, 3), -1.0, 1.0).astype(np.float32)[:, None]
         out[slot] = _vertbuf({"pos": extract.corner_pos[corners], "nor": extract.corner_nor[corners] * sign,
-                              "uv": slot_uv(extract, slot, corners)})
+                              "uv": slot_uv(extract, slot, corners), "col": slot_colors(extract, slot, corners)})
     return out
 
 
 def slot_uv(extract, slot, corners):
     """The UVs of a slot's corners for its image (MeshExtract.corner_uv), zero without one: every
     surface buffer has the attribute the surface program declares."""
-    texture = extract.slot_shading[slot].texture
-    uv = extract.corner_uv.get(texture.source.uv_map) if texture is not None else None
+    uv = _slot_uv(extract, slot)
     return uv[corners] if uv is not None else np.zeros((len(corners), 2), np.float32)
+
+
+def slot_colors(extract, slot, corners):
+    """The colour attribute its node program reads at a slot's corners (MeshExtract.corner_color),
+    zero without one."""
+    col = _slot_colors(extract, slot)
+    return col[corners] if col is not None else np.zeros((len(corners), 4), np.float32)
 
 
 def _triangles_batch(vbo, triangles):
@@ -125,7 +131,7 @@ def edge_batches(extract):
         turn = e.turn if e.turn is not None else np.zeros((n, 6), np.float32)
         vbo = _vertbuf({"p0": rep(e.p0), "p1": rep(e.p1), "n1": rep(e.n1), "n2": rep(e.n2), "faces": rep(faces),
                         "corner": corner, "ends": rep(ends), "turn1": rep(turn[:, :3]), "turn2": rep(turn[:, 3:]),
-                        "uv": rep(edge_uv(extract, slot, e))})
+                        "uv": rep(edge_uv(extract, slot, e)), **_edge_color_attrs(extract, slot, e, rep)})
         edge = np.repeat(np.arange(n), 6)
         idx = vid(edge, np.tile(tris, n)).astype(np.int32).reshape(-1, 3)
         out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
@@ -135,11 +141,23 @@ def edge_batches(extract):
 def _slot_uv(extract, slot):
     """The corner UVs of the slot's image (MeshExtract.corner_uv), or None."""
     texture = extract.slot_shading[slot].texture
-    return extract.corner_uv.get(texture.source.uv_map) if texture is not None else None
+    if texture is None or texture.source is None:
+        return None
+    return extract.corner_uv.get(texture.source.uv_map)
+
+
+def _slot_colors(extract, slot):
+    """The corner colours of the attribute the slot's node program reads (MeshExtract.corner_color),
+    or None."""
+    texture = extract.slot_shading[slot].texture
+    if texture is None or texture.program.attribute is None:
+        return None
+    return extract.corner_color.get(texture.program.attribute)
 
 
 def _uv_at(extract, uv, tri, verts):
-    """(N, 2) the UV at mesh vertex verts[i] on triangle tri[i] (one of its corners)."""
+    """(N, k) the per-corner value `uv` (a UV, a colour) at mesh vertex verts[i] on triangle
+    tri[i] (one of its corners)."""
     c = np.argmax(extract.edge_data.tri_verts[tri] == np.asarray(verts)[:, None], axis=1)
     return uv[3 * tri + c]
 
@@ -156,9 +174,33 @@ def _face_triangles(extract, slot, ids):
 
 
 def _has_uv(extract, slot, faces, verts):
+    return _has_values(extract, _slot_uv(extract, slot), faces, verts)
+
+
+def _has_values(extract, values, faces, verts):
+    """Whether per-corner `values` (UVs, colours) can be taken at edges' or corners' vertices."""
     d = extract.edge_data
-    return (_slot_uv(extract, slot) is not None and faces is not None and verts is not None and d is not None
+    return (values is not None and faces is not None and verts is not None and d is not None
             and d.tri_verts is not None and d.surface_id is not None)
+
+
+def _edge_color_attrs(extract, slot, e, rep):
+    """The edge batch's col0 and col1: the colour attribute at each edge's p0 and p1 on its face
+    of the slot, as edge_uv takes the UVs; zero without one."""
+    col = _slot_colors(extract, slot)
+    if not _has_values(extract, col, e.faces, e.verts):
+        zero = np.zeros((len(e), 4), np.float32)
+        return {"col0": rep(zero), "col1": rep(zero)}
+    tri = _face_triangles(extract, slot, e.faces)
+    return {"col0": rep(_uv_at(extract, col, tri, e.verts[:, 0])), "col1": rep(_uv_at(extract, col, tri, e.verts[:, 1]))}
+
+
+def corner_colors(extract, slot, c):
+    """(K, 4) the colour attribute at each corner patch's vertex, as corner_uv takes the UV."""
+    col = _slot_colors(extract, slot)
+    if not _has_values(extract, col, c.faces, c.vertex):
+        return np.zeros((len(c), 4), np.float32)
+    return _uv_at(extract, col, _face_triangles(extract, slot, c.faces), c.vertex)
 
 
 def edge_uv(extract, slot, e):
@@ -198,7 +240,8 @@ def corner_batches(extract):
         corner[:, 3] = rep(c.fold)
         vbo = _vertbuf({"v": rep(c.position), "m1": rep(c.normals[:, 0]), "m2": rep(c.normals[:, 1]),
                         "m3": rep(c.normals[:, 2]), "corner": corner, "faces_a": rep(c.faces[:, :3]),
-                        "faces_b": rep(c.faces[:, 3:]), "uv": rep(corner_uv(extract, slot, c))})
+                        "faces_b": rep(c.faces[:, 3:]), "uv": rep(corner_uv(extract, slot, c)),
+                        "col": rep(corner_colors(extract, slot, c))})
         idx = (np.arange(n)[:, None] * 4 + np.array([0, 1, 3, 0, 3, 2])).astype(np.int32).reshape(-1, 3)
         out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
     return out

@@ -75,7 +75,7 @@ def texture_key(s, mode, alpha=True):
     if s.texture is None or mode != SURFACE_MODES["PHONG"]:
         return None
     source = s.texture.source
-    key = (int(source.closest), EXTEND[source.extension])
+    key = (int(source.closest), EXTEND[source.extension]) if source is not None else (0, EXTEND["REPEAT"])
     return key + (int(s.texture.alpha),) if alpha else key  # the edge pass cuts nothing: no variants by alpha
 
 
@@ -91,7 +91,9 @@ def textured_uniforms(shader, s):
     """A textured slot's uniforms: its colours (alpha; the node program in its MaterialData
     block gives the rest: materials.BaseTexture) and its image."""
     shading_uniforms(shader, s)
-    shader_lib.set_sampler(shader, "base_tex", textures.gpu_texture(s.texture.source.image))
+    source = s.texture.source
+    shader_lib.set_sampler(shader, "base_tex", textures.gpu_texture(source.image) if source is not None
+                           else textures.no_image())
 
 
 def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False, culls=None,

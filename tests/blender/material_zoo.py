@@ -143,7 +143,7 @@ def vertex_coloured_low_poly():
     mat.node_tree.links.new(attr_node.outputs["Color"], _principled(mat).inputs["Base Color"])
     me.materials.append(mat)
     _floor(rgb=(0.3, 0.5, 0.3))
-    return Zoo("vertex_colours", "a low-poly rock painted with a Color Attribute", True, ("Base Color from Color Attribute",))
+    return Zoo("vertex_colours", "a low-poly rock painted with a Color Attribute", True, ())
 
 
 def alpha_clipped_cards():

@@ -1,6 +1,7 @@
 """Node chains into the Principled BSDF (node_program.py, material_program.glsl): Mix (each
 blend, 3.4's Mix RGB too), Math (each operation), ColorRamp, Invert, Separate and Combine, Clamp
-and Blender's conversions, from an image per pixel and folded without one. Each chain is drawn
+and Blender's conversions, from an image or a colour attribute per pixel and folded without
+either. Each chain is drawn
 on a strip of a quad seen from above under a white world with no light and Specular 0, so the
 pixel is the albedo, base colour x (1 - metallic). Held two ways at each texel's centre: to the
 add-on's own ops (node_program.run: the GLSL to the Python) within 1e-3 (the targets hold half floats), and to Cycles rendering
@@ -112,10 +113,35 @@ CHAINS = ([(f"mix {b}", lambda t, x, b=b: _mix(t, x, b)) for b in MIX_BLENDS]
              ("separate, invert, clamp, combine", _misc), ("folded", _folded)])
 
 
-def strips_scene(chains, metallic_strip=False):
+# The colour attribute's value on each of a strip's four faces (a corner attribute, one colour
+# a face): the texels' places.
+COLORS = np.array([[0.9, 0.3, 0.1, 1.0], [0.2, 0.6, 0.4, 0.5], [0.05, 0.1, 0.8, 0.25], [0.7, 0.7, 0.2, 1.0]],
+                  np.float32)
+
+
+def four_face_strip(name):
+    """A 2 x 2 quad of four faces side by side (one per texel), its UVs spanning the image, and a
+    corner colour attribute 'Col' of one colour a face (COLORS), the render one."""
+    xs = np.linspace(-1.0, 1.0, 5)
+    verts = [(x, y, 0.0) for y in (-1.0, 1.0) for x in xs]
+    faces = [(i, i + 1, 6 + i, 5 + i) for i in range(4)]
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(verts, [], faces)
+    uv = mesh.uv_layers.new(name="UVMap")
+    loop_vert = [v for f in faces for v in f]
+    uv.data.foreach_set("uv", np.array([((verts[v][0] + 1.0) / 2.0, (verts[v][1] + 1.0) / 2.0) for v in loop_vert],
+                                       np.float32).reshape(-1))
+    col = mesh.color_attributes.new("Col", 'FLOAT_COLOR', 'CORNER')
+    col.data.foreach_set("color", np.repeat(COLORS, 4, axis=0).reshape(-1))
+    mesh.color_attributes.render_color_index = 0
+    return mesh
+
+
+def strips_scene(chains, metallic_strip=False, colored=False):
     """One strip per chain (top to bottom), each a plane with the chain into its Base Color (for
     EdgeLight) and into an Emission (for Cycles), read from a 4 x 1 float image, Closest. With
-    `metallic_strip`, a last strip whose Metallic is the image's red."""
+    `metallic_strip`, a last strip whose Metallic is the image's red; with `colored`, each strip
+    is four faces with a colour attribute (four_face_strip)."""
     count = len(chains) + int(metallic_strip)
     scene = helpers.empty_scene(WIDTH, STRIP_PX * count, highlights=False)
     helpers.set_world_color(scene, (1.0, 1.0, 1.0))
@@ -130,6 +156,8 @@ def strips_scene(chains, metallic_strip=False):
         bpy.ops.mesh.primitive_plane_add(size=2.0, location=(0.0, height / 2.0 - (k + 0.5) * height / count, 0.0))
         ob = bpy.context.object
         ob.scale = (1.0, 1.0 / count * height / 2.0, 1.0)
+        if colored:
+            ob.data = four_face_strip(f"strip {k}")
         build = chains[k][1] if k < len(chains) else (lambda t, x: x.outputs["Color"])
         setup = chains[k][2] if k < len(chains) and len(chains[k]) > 2 else None
         mats = []
@@ -240,6 +268,105 @@ class NodeChains(unittest.TestCase):
         self.assertEqual(len(lines), 1, lines)
         self.assertIn("Roughness from Image Texture 'Image Texture.001': a second image ('Texels' is drawn)", lines[0])
         self.assertIn("Metallic from Gamma (its value", lines[0])
+
+
+def _color_attribute(tree, tex):
+    node = tree.nodes.new('ShaderNodeVertexColor')  # its name empty: the render colour attribute
+    return node.outputs["Color"]
+
+
+def _attribute_fac_ramp(tree, tex):
+    """An Attribute node naming 'Col', its Fac (the colour's mean) through a ColorRamp."""
+    attr = tree.nodes.new('ShaderNodeAttribute')
+    attr.attribute_name = "Col"
+    ramp = tree.nodes.new('ShaderNodeValToRGB')
+    ramp.color_ramp.elements[0].color = (0.1, 0.2, 0.9, 1.0)
+    ramp.color_ramp.elements[1].color = (1.0, 0.8, 0.1, 1.0)
+    tree.links.new(attr.outputs["Fac"], ramp.inputs["Fac"])
+    return ramp.outputs["Color"]
+
+
+def _attribute_times_image(tree, tex):
+    """The colour attribute times the image (Mix Multiply), plus its alpha through Math."""
+    n, link = tree.nodes, tree.links.new
+    col = n.new('ShaderNodeVertexColor')
+    col.layer_name = "Col"
+    m = n.new('ShaderNodeMixRGB')
+    m.blend_type = 'MULTIPLY'
+    link(col.outputs["Alpha"], m.inputs["Fac"])
+    link(col.outputs["Color"], m.inputs["Color1"])
+    link(tex.outputs["Color"], m.inputs["Color2"])
+    return m.outputs["Color"]
+
+
+ATTRIBUTE_CHAINS = [("color attribute", _color_attribute), ("attribute fac ramp", _attribute_fac_ramp),
+                    ("attribute x image", _attribute_times_image)]
+
+
+class ColorAttributes(unittest.TestCase):
+    def setUp(self):
+        helpers.needs_gpu()
+
+    def test_chains_from_a_colour_attribute(self):
+        """Color Attribute (the render one), an Attribute node's Fac, and the attribute times the
+        image by its alpha: per face as node_program.run gives it, and as Cycles draws it."""
+        scene, pairs = strips_scene(ATTRIBUTE_CHAINS, colored=True)
+        el = helpers.addon()
+        rec = helpers.render()
+        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+        ours = centres(rec["pixels"], len(pairs))
+        n = el.materials.shininess_from_roughness(0.5)
+        albedo = np.zeros_like(ours)
+        for k, (_ob, mats) in enumerate(pairs):
+            program = el.materials.shading_of(mats[0]).texture.program
+            for t in range(4):
+                albedo[k, t] = np.maximum(el.node_program.run(program, tuple(TEXELS[t]), tuple(COLORS[t]))["Base Color"][:3], 0)
+                want = albedo[k, t] + helpers.env_specular(np.zeros(3), n, 1.0)
+                np.testing.assert_allclose(ours[k, t], want, rtol=1e-3, atol=1e-4, err_msg=f"{ATTRIBUTE_CHAINS[k][0]} face {t}")
+        np.testing.assert_allclose(albedo[0], COLORS[:, :3], atol=1e-6)  # the attribute itself
+        for _ob, mats in pairs:
+            _ob.data.materials[0] = mats[1]
+        theirs = centres(cycles_pixels(scene, samples=1), len(pairs))
+        err = np.abs(albedo - theirs).max(axis=-1)
+        print(f"colour attribute chains against Cycles: worst {err.max():.4f}")
+        for k, (name, _b) in enumerate(ATTRIBUTE_CHAINS):
+            for t in range(4):
+                self.assertLess(err[k, t], 0.01, f"{name} face {t}: EdgeLight {albedo[k, t]}, Cycles {theirs[k, t]}")
+
+    def test_bands_and_corners_take_the_attribute(self):
+        """A cube whose vertices are all red in a point colour attribute, through Color
+        Attribute into Base Color: its bands and corner patches are red, as a bevel would be;
+        white (the program's constant for no attribute) or zero would not be."""
+        scene = helpers.empty_scene(160, 160, highlights=True)
+        helpers.set_world_color(scene, (0.3, 0.3, 0.3))
+        helpers.add_camera((4.0, -5.0, 3.5))
+        helpers.add_sun((0.4, -1.0, 0.8), 3.0)
+        bpy.ops.mesh.primitive_cube_add(size=2.0)
+        ob = bpy.context.object
+        col = ob.data.color_attributes.new("Paint", 'BYTE_COLOR', 'POINT')
+        col.data.foreach_set("color", np.tile([1.0, 0.0, 0.0, 1.0], len(col.data)).astype(np.float32))
+        mat = bpy.data.materials.new("Painted")
+        mat.use_nodes = True
+        bsdf = next(n for n in mat.node_tree.nodes if n.type == 'BSDF_PRINCIPLED')
+        mat.node_tree.links.new(_color_attribute(mat.node_tree, None), bsdf.inputs["Base Color"])
+        mat.edgelight.radius = 0.08
+        ob.data.materials.append(mat)
+        rec = helpers.render()
+        hl = np.asarray(rec["highlight"])
+        band = hl[..., 3] > 0.2
+        red, green = hl[band][:, 0].sum(), hl[band][:, 1].sum()
+        print(f"{int(band.sum())} band pixels: red {red:.2f}, green {green:.2f}")
+        self.assertGreater(band.sum(), 100)
+        self.assertGreater(red, 20.0 * green)
+        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+
+    def test_a_missing_attribute_reads_black_and_is_said(self):
+        _scene, pairs = strips_scene([("color attribute", _color_attribute)])  # planes without one
+        rec = helpers.render()
+        said = [m for level, m in rec.get("messages", []) if level == 'WARNING']
+        self.assertTrue(any("reads a colour attribute the mesh does not have; it reads black" in m for m in said), said)
+        ours = centres(rec["pixels"], 1)
+        self.assertLess(float(ours.max()), 0.01)
 
 
 def _rough_metal(tree, tex, bsdf):
