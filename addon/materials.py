@@ -155,9 +155,11 @@ def shading_of(material):
             at_mean = node_program.run(program, mean, (1.0, 1.0, 1.0, 1.0))
             base = tuple(at_mean["Base Color"][:3])
             metallic, roughness = at_mean["Metallic"][0], at_mean["Roughness"][0]
-        # As the Principled BSDF takes them (material_program.glsl): no negative albedo.
-        base = tuple(max(c, 0.0) for c in base)
-        metallic, roughness = min(max(metallic, 0.0), 1.0), min(max(roughness, 0.0), 1.0)
+        # As the Principled BSDF takes them (material_program.glsl): no negative albedo; a chain
+        # that computes no number (a NaN, an overflow) gives the socket's default.
+        base = tuple(max(c, 0.0) if math.isfinite(c) else 0.0 for c in base)
+        metallic = min(max(metallic, 0.0), 1.0) if math.isfinite(metallic) else 0.0
+        roughness = min(max(roughness, 0.0), 1.0) if math.isfinite(roughness) else 0.5
         specular = folded.scalar(0.5, "Specular", "Specular IOR Level")  # renamed in 4.0
         # An image's alpha into Alpha cuts the surface (BaseTexture.alpha); the socket's own value,
         # left from before it was linked, is not the material's alpha.
@@ -224,12 +226,15 @@ class _Folded:
         return _input(self.node, *names)
 
     def scalar(self, default, *names):
+        """A float input's value; `default` for none, or a chain that computes no number."""
         v = self._get(names)
-        return default if v is None else float(v if isinstance(v, (int, float)) else v[0])
+        v = None if v is None else float(v if isinstance(v, (int, float)) else v[0])
+        return v if v is not None and math.isfinite(v) else default
 
     def color(self, name, default):
         v = self._get((name,))
-        return default if v is None else tuple(float(c) for c in v[:3])
+        v = None if v is None else tuple(float(c) for c in v[:3])
+        return v if v is not None and all(math.isfinite(c) for c in v) else default
 
     def unfolded(self, *names):
         """Whether one of the inputs is linked to a chain that did not fold."""

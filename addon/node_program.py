@@ -147,8 +147,11 @@ def apply(op, sub, settings, a, b, c, texel=(0.0, 0.0, 0.0, 0.0), ramp=None, col
         out = _blend(sub, a, b, t)
         return _clamp01(out) if settings[1] else out
     if op == OP["MATH"]:
-        v = _MATH_BY_VALUE[sub](a[0], b[0], c[0])
-        return _f(min(max(v, 0.0), 1.0) if settings[0] else v)
+        try:
+            v = _MATH_BY_VALUE[sub](a[0], b[0], c[0])
+        except (OverflowError, ValueError):  # the GPU's inf or NaN: not a value a material can use
+            v = math.nan
+        return _f(min(max(v, 0.0), 1.0) if settings[0] and not math.isnan(v) else v)
     if op == OP["RAMP"]:
         return _ramp(a[0], sub == 1, *ramp)
     if op == OP["INVERT"]:
@@ -325,6 +328,9 @@ class _Compiler:
                          self.input(_socket(node, "Factor_Float")))
 
     def _ramp(self, node, out):
+        """A ColorRamp's Color; its Alpha the Color's alpha (one RAMP instruction for both)."""
+        if out.name == "Alpha":
+            return self.emit(OP["SEPARATE"], 3, a=self.output(node, node.outputs["Color"]))
         ramp = node.color_ramp
         if ramp.color_mode != 'RGB' or ramp.interpolation not in {'LINEAR', 'CONSTANT'}:
             what = ramp.interpolation if ramp.color_mode == 'RGB' else ramp.color_mode
@@ -333,9 +339,8 @@ class _Compiler:
                        key=lambda s: s[0])
         if len(stops) > MAX_STOPS:
             raise Unsupported(f"{_describe(node)}: more than {MAX_STOPS} stops")
-        val = self.emit(OP["RAMP"], int(ramp.interpolation == 'LINEAR'), a=self.input(node.inputs["Fac"]),
-                        ramp=([p for p, _ in stops], [c for _, c in stops]))
-        return self.emit(OP["SEPARATE"], 3, a=val) if out.name == "Alpha" else val
+        return self.emit(OP["RAMP"], int(ramp.interpolation == 'LINEAR'), a=self.input(node.inputs["Fac"]),
+                         ramp=([p for p, _ in stops], [c for _, c in stops]))
 
     def _image(self, node, out):
         source = material_inputs.image_node_input(node)
@@ -398,7 +403,11 @@ def read(node, names):
             outputs[name] = val[1]
     if not outputs:
         return Chains(values, Program(), unread)
-    for name in PER_PIXEL:  # the program gives all three; those not drawn per pixel as constants
-        if name not in outputs:
-            outputs[name] = comp.const_ref(values[name] if name in values else _default(node.inputs[name]))
+    try:
+        for name in PER_PIXEL:  # the program gives all three; those not drawn per pixel as constants
+            if name not in outputs:
+                outputs[name] = comp.const_ref(values[name] if name in values else _default(node.inputs[name]))
+    except Unsupported as e:  # no room left for them: no program, its chains said
+        firsts = [(name, _describe(node.inputs[name].links[0].from_node)) for name in outputs]
+        return Chains(values, Program(), unread + [(name, f"{first}: {e}") for name, first in firsts])
     return Chains(values, Program(tuple(comp.code), tuple(comp.consts), outputs, comp.image, comp.attribute), unread)

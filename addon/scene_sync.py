@@ -251,7 +251,7 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
         corner_nor = np.where(np.isfinite(corner_nor).all(axis=1, keepdims=True), corner_nor, flat)
     shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
     shading, corner_uv, missing_uv = textured_corners(name, mesh, shading, tri_loops)
-    shading, corner_color = colored_corners(name, mesh, shading, tri_loops, tri_poly)
+    shading, corner_color = colored_corners(name, mesh, shading, tri_loops)
     key = content = None
     if cache is not None or same_content is not None:
         digest = render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot, marks, bevel,
@@ -381,10 +381,10 @@ def color_attribute(mesh, name):
     else:
         index = getattr(colors, "render_color_index", -1)
         attr = colors[index] if 0 <= index < len(colors) else colors.active_color
-    return attr if attr is not None and attr.domain in {'POINT', 'CORNER', 'FACE'} else None
+    return attr if attr is not None and attr.domain in {'POINT', 'CORNER'} else None
 
 
-def colored_corners(name, mesh, shading, tri_loops, tri_poly):
+def colored_corners(name, mesh, shading, tri_loops):
     """(shading, {attribute name: (3T, 4) corner colours, scene-linear}) for the slots whose node
     program reads a colour attribute. Where the mesh lacks it the program reads zero, as
     Blender's nodes read a missing attribute, and the slot's note says so."""
@@ -397,14 +397,15 @@ def colored_corners(name, mesh, shading, tri_loops, tri_poly):
                 values = _foreach(attr.data, "color", np.float32, 4)
                 if attr.domain == 'POINT':
                     index = _foreach(mesh.loops, "vertex_index", np.int64)[tri_loops.reshape(-1)]
-                elif attr.domain == 'CORNER':
-                    index = tri_loops.reshape(-1)
                 else:
-                    index = np.repeat(tri_poly, 3)
+                    index = tri_loops.reshape(-1)
                 corner_color[attr_name] = np.ascontiguousarray(values[index])
             else:
                 which = f"colour attribute '{attr_name}'" if attr_name else "colour attribute"
                 note = f"{name}: material '{s.material}' reads a {which} the mesh does not have; it reads black"
+                if attr_name and attr_name in mesh.attributes:
+                    note = (f"{name}: material '{s.material}' reads attribute '{attr_name}', which is not a colour "
+                            f"attribute; it reads black")
                 s = dataclasses.replace(s, note="; ".join(n for n in (s.note, note) if n))
         out.append(s)
     return out, corner_color

@@ -12,7 +12,7 @@ void main()
   corner_n3 = el_transform_normal(model, m3);
   corner_faces_a = faces_a;
   corner_faces_b = faces_b;
-  corner_uv = uv; /* an image's UV at the vertex (batches.corner_uv), zero without one */
+  corner_uv = uv;   /* an image's UV at the vertex (batches.corner_uv), zero without one */
   corner_col = col; /* the colour attribute there (batches.corner_colors), zero without one */
   float r = corner.z * el_ball_scale(model, m1, m2, m3);
   corner_radius = r;

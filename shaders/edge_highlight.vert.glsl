@@ -81,8 +81,8 @@ void main()
   vec3 w0 = (model * vec4(p0, 1.0)).xyz;
   vec3 w1 = (model * vec4(p1, 1.0)).xyz;
   edge_faces = faces;
-  edge_uv = uv; /* the image's UV at p0 and at p1 on the edge's face (batches.edge_uv), zero without one */
-  edge_col0 = col0; /* and the colour attribute there (batches.edge_colors) */
+  edge_uv = uv;     /* the image's UV at p0 and at p1 on the edge's face (batches.edge_uv), zero without one */
+  edge_col0 = col0; /* and the colour attribute there (batches._edge_attribute_colors) */
   edge_col1 = col1;
   /* Each end's normals transformed as the surface pass transforms its corner normals (each
    * normalized before the blend along the edge), then the world mean and turn from them as

@@ -7,7 +7,7 @@ void main()
   vec4 v = frame.view * world;
   view_depth = -v.z;
   gl_Position = frame.projection * v;
-  surface_uv = uv; /* zero where the slot draws no image (batches.slot_uv) */
+  surface_uv = uv;   /* zero where the slot draws no image (batches.slot_uv) */
   surface_col = col; /* the colour attribute its node program reads, zero without one (batches.slot_colors) */
   /* Three vertices per triangle, in order, whether all are drawn or an indexed subset
    * (passes/batches.py): the triangle's number in its slot's batch. */

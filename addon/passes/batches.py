@@ -131,7 +131,7 @@ def edge_batches(extract):
         turn = e.turn if e.turn is not None else np.zeros((n, 6), np.float32)
         vbo = _vertbuf({"p0": rep(e.p0), "p1": rep(e.p1), "n1": rep(e.n1), "n2": rep(e.n2), "faces": rep(faces),
                         "corner": corner, "ends": rep(ends), "turn1": rep(turn[:, :3]), "turn2": rep(turn[:, 3:]),
-                        "uv": rep(edge_uv(extract, slot, e)), **_edge_color_attrs(extract, slot, e, rep)})
+                        "uv": rep(edge_uv(extract, slot, e)), **_edge_attribute_colors(extract, slot, e, rep)})
         edge = np.repeat(np.arange(n), 6)
         idx = vid(edge, np.tile(tris, n)).astype(np.int32).reshape(-1, 3)
         out[slot] = gpu.types.GPUBatch(type='TRIS', buf=vbo, elem=gpu.types.GPUIndexBuf(type='TRIS', seq=idx))
@@ -184,7 +184,7 @@ def _has_values(extract, values, faces, verts):
             and d.tri_verts is not None and d.surface_id is not None)
 
 
-def _edge_color_attrs(extract, slot, e, rep):
+def _edge_attribute_colors(extract, slot, e, rep):
     """The edge batch's col0 and col1: the colour attribute at each edge's p0 and p1 on its face
     of the slot, as edge_uv takes the UVs; zero without one."""
     col = _slot_colors(extract, slot)

@@ -112,7 +112,8 @@ class Block:
         out = np.zeros(self.size, np.float32)
         for name, value in values.items():
             offset, count, floats = self.members[name]
-            flat = np.asarray(value, np.float32).reshape(-1)
+            with np.errstate(over='ignore'):  # past float32: inf, as the GPU would compute it
+                flat = np.asarray(value, np.float32).reshape(-1)
             if flat.size > count * floats:
                 raise ValueError(f"{name}: {flat.size} floats, room for {count * floats}")
             out[offset:offset + flat.size] = flat

@@ -77,6 +77,7 @@ SurfaceCorners surface_corners(const LoadedMesh& m, float smooth_deg) {
         }
     }
     out.uv.assign(6 * tris, 0.0f);
+    out.col.assign(12 * tris, 0.0f);
     return out;
 }
 
@@ -127,6 +128,8 @@ EdgeQuads edge_quads(const EdgeSet& edges, float radius, Provoking provoking) {
     q.turn1.assign(12 * n, 0.0f);
     q.turn2.assign(12 * n, 0.0f);
     q.uv.assign(16 * n, 0.0f);
+    q.col0.assign(16 * n, 0.0f);
+    q.col1.assign(16 * n, 0.0f);
     for (size_t i = 0; i < n; ++i) {
         for (uint32_t c = 0; c < 4; ++c) {
             const size_t s = slot(i, c);

@@ -11,10 +11,11 @@
 
 namespace el_tools {
 
-// Corner arrays of the surface pass (3 corners per triangle; vertex_in "pos", "nor", "uv").
+// Corner arrays of the surface pass (3 corners per triangle; vertex_in "pos", "nor", "uv", "col").
 struct SurfaceCorners {
     std::vector<float> pos, nor;  // xyz per corner
     std::vector<float> uv;        // 2 per corner, zero: this renderer draws no image (EL_BASE_TEXTURE)
+    std::vector<float> col;       // 4 per corner, zero: nor a node program's colour attribute
 };
 
 // Rounded edges: manifold, not degenerate, angle between face normals above the threshold (the
@@ -37,8 +38,9 @@ struct EdgeQuads {
     // 3 per vertex each: how N1 and N2 turn along the edge (the add-on's edge_data.mean_and_turn),
     // zero here: this renderer's normals are the faces' own, constant along each edge.
     std::vector<float> turn1, turn2;
-    std::vector<float> uv;              // 4 per vertex: an image's UV at p0 and p1, zero: no image here
-    std::vector<uint32_t> indices;      // 6 per edge
+    std::vector<float> uv;          // 4 per vertex: an image's UV at p0 and p1, zero: no image here
+    std::vector<float> col0, col1;  // 4 per vertex each: a colour attribute at p0 and p1, zero here
+    std::vector<uint32_t> indices;  // 6 per edge
 };
 
 // Corner normals as Blender's auto smooth gives them: the angle-weighted normals of the faces

@@ -369,6 +369,63 @@ class ColorAttributes(unittest.TestCase):
         self.assertLess(float(ours.max()), 0.01)
 
 
+class PastWhatItCanDraw(unittest.TestCase):
+    def setUp(self):
+        helpers.needs_gpu()
+
+    def test_chains_past_the_blocks_room_are_said_and_the_render_goes_on(self):
+        """Two 8-stop ramps of the image into Base Color (through an Invert and a Mix) and
+        Roughness fill the 24 constants; Metallic's own value then has no room: no program,
+        each chain said."""
+        def two_ramps(tree, tex, bsdf):
+            for name in ("Base Color", "Roughness"):
+                ramp = tree.nodes.new('ShaderNodeValToRGB')
+                for k in range(6):
+                    ramp.color_ramp.elements.new(0.1 + 0.13 * k).color = (0.1 * k, 0.5, 0.2, 1.0)
+                tree.links.new(tex.outputs["Color"], ramp.inputs["Fac"])
+                if name == "Base Color":
+                    inv = tree.nodes.new('ShaderNodeInvert')
+                    inv.inputs["Fac"].default_value = 0.6
+                    tree.links.new(ramp.outputs["Color"], inv.inputs["Color"])
+                    mix = tree.nodes.new('ShaderNodeMixRGB')
+                    mix.inputs["Color2"].default_value = (0.25, 0.5, 0.75, 1.0)
+                    mix.inputs["Fac"].default_value = 0.3
+                    tree.links.new(inv.outputs["Color"], mix.inputs["Color1"])
+                    tree.links.new(mix.outputs["Color"], bsdf.inputs[name])
+                else:
+                    tree.links.new(ramp.outputs["Color"], bsdf.inputs[name])
+            bsdf.inputs["Metallic"].default_value = 0.35
+        _scene, pairs = strips_scene([("full", lambda t, x: x.outputs["Color"], two_ramps)])
+        mat = pairs[0][1][0]
+        bsdf = next(n for n in mat.node_tree.nodes if n.type == 'BSDF_PRINCIPLED')
+        mat.node_tree.links.remove(bsdf.inputs["Base Color"].links[0])  # the strip's own image link
+        mix = next(n for n in mat.node_tree.nodes if n.type == 'MIX_RGB')
+        mat.node_tree.links.new(mix.outputs["Color"], bsdf.inputs["Base Color"])
+        rec = helpers.render()
+        said = [m for level, m in rec.get("messages", []) if level == 'WARNING']
+        self.assertEqual(len(said), 1, said)
+        self.assertIn("more than 24 constants", said[0])
+        self.assertIn("Base Color from", said[0])
+        self.assertIn("Roughness from", said[0])
+        self.assertGreater(float(np.asarray(rec["pixels"])[..., 3].max()), 0.5)
+
+    def test_a_chain_that_computes_no_number_gives_the_default(self):
+        """1e38 to the power 10 into Roughness: an overflow folds to the socket's default (0.5),
+        and the render goes on."""
+        def overflow(tree, tex, bsdf):
+            val, power = tree.nodes.new('ShaderNodeValue'), tree.nodes.new('ShaderNodeMath')
+            val.outputs[0].default_value = 1e38
+            power.operation = 'POWER'
+            power.inputs[1].default_value = 10.0
+            tree.links.new(val.outputs[0], power.inputs[0])
+            tree.links.new(power.outputs[0], bsdf.inputs["Roughness"])
+        _scene, pairs = strips_scene([("overflow", lambda t, x: x.outputs["Color"], overflow)])
+        rec = helpers.render()
+        self.assertNotIn("ERROR", [level for level, _ in rec.get("messages", [])])
+        s = helpers.addon().materials.shading_of(pairs[0][1][0])
+        self.assertEqual(s.shininess, helpers.addon().materials.shininess_from_roughness(0.5))
+
+
 def _rough_metal(tree, tex, bsdf):
     """Metallic 1, Roughness the image's green."""
     bsdf.inputs["Metallic"].default_value = 1.0
