@@ -179,11 +179,11 @@ def shading_of(material):
     n = s.shininess if s.use_custom_shininess else shininess_from_roughness(roughness)
     toon, note = usable_toon(material.name, toon_of(s, base))
     if node is not None and program.outputs and toon.mode != PHONG.mode:
-        # Toon shading draws no node program (surface_pass.texture_key): said, as what is not drawn is.
-        cut = " (and its alpha cuts nothing)" if material_inputs.image_alpha(node, image) else ""
+        # Toon shading draws no node program (passes/texture_variants.texture_key; an image's alpha still
+        # cuts): said, as what is not drawn is.
         what = (f"its image '{image.image.name}' is drawn as its mean colour" if image is not None
                 else "its colour attribute is drawn as white")
-        note = "; ".join(n for n in (note, f"material '{material.name}': {what} under toon shading{cut}") if n)
+        note = "; ".join(n for n in (note, f"material '{material.name}': {what} under toon shading") if n)
     note = "; ".join(n for n in (material_inputs.note(material, unread(material)), note) if n)
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.

@@ -14,6 +14,7 @@
  * samples average the cut into the alpha's coverage. The first sample cuts at 1/2: its depth and
  * ids are what the bands and the ink are hidden by, for every sample, so a hashed pattern there
  * would stay in them as dots. */
+#ifndef EL_SHADOW_CUT /* the shadow pass has no frame: it cuts at 1/2 */
 float el_alpha_hash()
 {
   if (frame.camera.z < 0.5) {
@@ -22,6 +23,7 @@ float el_alpha_hash()
   vec2 p = floor(gl_FragCoord.xy) + frame.frame_pixel.xy + 5.588238 * frame.camera.z;
   return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
 }
+#endif
 
 vec4 el_base_fetch(ivec2 p, ivec2 size)
 {

@@ -3,13 +3,8 @@ method (shaders/edge_highlight.*), premultiplied into the highlight target, once
 the corner patches over them (batches.corner_batches, shaders/edge_corner.*)."""
 from . import frame_data, pass_state, shader_lib, table
 from .lighting_inputs import NONE
-from .surface_pass import (
-    SURFACE_MODES,
-    shading_uniforms,
-    texture_defines,
-    texture_key,
-    textured_uniforms,
-)
+from .surface_pass import shading_uniforms, textured_uniforms
+from .texture_variants import SURFACE_MODES, texture_defines, texture_key
 
 
 def draw_highlights(targets, scene, gpu_meshes, ubo, stats, lighting=NONE):
@@ -24,7 +19,7 @@ def draw_highlights(targets, scene, gpu_meshes, ubo, stats, lighting=NONE):
         # A Blinn-Phong material's bands replace the sharp faces under them (el_faces_under_band);
         # a toon material's faces are shaded otherwise, so its bands blend over the pixel.
         # A slot drawing an image in Base Color has its own variant, the texel along the edge
-        # (surface_pass.texture_key).
+        # (texture_variants.texture_key).
         keys = {(_is_phong(s), texture_key(s, _mode(s), alpha=False)) for inst in scene.instances
                 for k, s in enumerate(gpu_meshes[id(inst.mesh)].extract.slot_shading)
                 if k in gpu_meshes[id(inst.mesh)].edges}

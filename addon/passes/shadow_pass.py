@@ -7,9 +7,10 @@ it, and a light's size softens the shadow in the lookup (docs/shadows.md)."""
 import gpu
 import numpy as np
 
-from .. import compat
-from . import frame_data, shader_lib
+from .. import compat, textures
+from . import frame_data, material_data, shader_lib
 from .shadow_plan import atlas_grid, layer_casters, merged_casters
+from .texture_variants import SURFACE_MODES, texture_defines, texture_key
 
 # What a tile holds where nothing is drawn: farther than anything.
 EMPTY = 3.0e38
@@ -44,9 +45,18 @@ def _merged_batch(corners):
         return None
     fmt = gpu.types.GPUVertFormat()
     fmt.attr_add(id="pos", comp_type='F32', len=3, fetch_mode='FLOAT')
+    fmt.attr_add(id="uv", comp_type='F32', len=2, fetch_mode='FLOAT')  # declared by the program; no cut here
     vbo = gpu.types.GPUVertBuf(fmt, len(corners))
     vbo.attr_fill("pos", np.ascontiguousarray(corners))
+    vbo.attr_fill("uv", np.zeros((len(corners), 2), np.float32))
     return gpu.types.GPUBatch(type='TRIS', buf=vbo)
+
+
+def cut_key(s):
+    """The texture key (texture_variants.texture_key) of a slot that casts only where its image's
+    alpha keeps its surface, or None."""
+    cuts = s.texture is not None and s.texture.alpha and s.texture.source is not None
+    return texture_key(s, SURFACE_MODES["PHONG"]) if cuts else None
 
 
 def draw(plan, scene, gpu_meshes, maps):
@@ -57,6 +67,7 @@ def draw(plan, scene, gpu_meshes, maps):
         return None
     per_row = maps.fit(plan.size, plan.layers)
     shader = shader_lib.get("shadow")
+    cut_shaders = {}
     merged, corners = merged_casters(scene)
     merged_batch = _merged_batch(corners)
     merged = set(merged)
@@ -81,8 +92,27 @@ def draw(plan, scene, gpu_meshes, maps):
                     continue
                 inst = scene.instances[index]
                 shader_lib.set_uniform(shader, "model", frame_data.mat4(inst.matrix))
-                for batch in gpu_meshes[id(inst.mesh)].surface.values():
-                    batch.draw(shader)
+                gm = gpu_meshes[id(inst.mesh)]
+                cut = []
+                for slot, batch in gm.surface.items():
+                    key = cut_key(gm.extract.slot_shading[slot])
+                    if key is None:
+                        batch.draw(shader)
+                    else:
+                        cut.append((key, slot, batch))
+                for key, slot, batch in cut:  # in the cutting variant, then back to the plain one
+                    if key not in cut_shaders:
+                        cut_shaders[key] = shader_lib.get("shadow", {**texture_defines(key), "EL_SHADOW_CUT": 1})
+                    cutter = cut_shaders[key]
+                    cutter.bind()
+                    shader_lib.set_uniform(cutter, "light_matrix", frame_data.mat4(matrix))
+                    shader_lib.set_uniform(cutter, "model", frame_data.mat4(inst.matrix))
+                    s = gm.extract.slot_shading[slot]
+                    shader_lib.set_block(cutter, "material", material_data.buffer(s))  # its threshold
+                    shader_lib.set_sampler(cutter, "base_tex", textures.gpu_texture(s.texture.source.image))
+                    batch.draw(cutter)
+                if cut:
+                    shader.bind()
         gpu.state.depth_test_set('NONE')
         gpu.state.depth_mask_set(False)
     return maps.maps

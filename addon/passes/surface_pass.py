@@ -4,13 +4,10 @@ import gpu
 import numpy as np
 
 from .. import closed_surfaces, rounded_outline, textures
-from . import frame_data, material_data, pass_state, shader_lib, shader_specs, toon
+from . import frame_data, material_data, pass_state, shader_lib, toon
 from .lighting_inputs import NONE
 from .targets import surface_outputs
-
-# The surface program's shading modes and an image's extensions (shaders/surface_modes.json).
-SURFACE_MODES = shader_specs.enum("surface_modes.json", "EL_SURFACE_MODE")
-EXTEND = shader_specs.enum("surface_modes.json", "EL_EXTEND")
+from .texture_variants import SURFACE_MODES, texture_defines, texture_key
 
 
 def shading_uniforms(shader, s):
@@ -67,24 +64,6 @@ def cull_modes(scene, camera):
         if hidden[k]:
             out[i] = 'FRONT' if mirrored[k] else 'BACK'
     return out
-
-
-def texture_key(s, mode, alpha=True):
-    """(Closest, extension) of the variant that draws a slot's image into Base Color (its
-    materials.BaseTexture, in the Phong mode), or None."""
-    if s.texture is None or mode != SURFACE_MODES["PHONG"]:
-        return None
-    source = s.texture.source
-    key = (int(source.closest), EXTEND[source.extension]) if source is not None else (0, EXTEND["REPEAT"])
-    return key + (int(s.texture.alpha),) if alpha else key  # the edge pass cuts nothing: no variants by alpha
-
-
-def texture_defines(key):
-    """The defines of the variant drawing an image with texture_key `key` (shaders/textures.glsl)."""
-    if key is None:
-        return {}
-    return {"EL_BASE_TEXTURE": 1, "EL_TEX_CLOSEST": key[0], "EL_TEX_EXTEND": key[1],
-            "EL_TEX_ALPHA": key[2] if len(key) > 2 else 0}
 
 
 def textured_uniforms(shader, s):

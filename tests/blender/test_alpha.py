@@ -105,5 +105,72 @@ class ImageAlpha(unittest.TestCase):
         self.assertIn("blended alpha is drawn hashed", said[0])
 
 
+def _set_cut(mat, hashed=False):
+    """Alpha Clip at 1/2 (3.4), or hashed: Alpha Hashed (3.4) / Dithered (4.2+)."""
+    if hasattr(mat, "surface_render_method"):
+        mat.surface_render_method = 'DITHERED'
+    else:
+        mat.blend_method, mat.alpha_threshold = ('HASHED' if hashed else 'CLIP'), 0.5
+
+
+class CutShadows(unittest.TestCase):
+    """An alpha-cut card 1 above a white floor, its left half kept (alpha 1) and its right half
+    cut (alpha 0), under a sun 45 degrees to the side: the kept half's shadow falls on the floor
+    under the cut half (seen through it), and the cut half casts none, as in EEVEE."""
+
+    def setUp(self):
+        helpers.needs_gpu()
+
+    def scene(self, hashed, toon=False):
+        scene = helpers.empty_scene(96, 64, highlights=False)
+        helpers.set_world_color(scene, (0.0, 0.0, 0.0))
+        bpy.ops.mesh.primitive_plane_add(size=20.0)
+        floor = bpy.context.object
+        floor.data.materials.append(zoo.material("Floor", (0.8, 0.8, 0.8)))
+        bpy.ops.mesh.primitive_plane_add(size=2.0, location=(0.0, 0.0, 1.0))
+        card_ob = bpy.context.object
+        img = bpy.data.images.new("Half", 2, 1, alpha=True, float_buffer=True)
+        img.pixels.foreach_set(np.array([(*RED, 1.0), (*RED, 0.0)], np.float32).reshape(-1))
+        mat = zoo.material("Card", (0.8, 0.8, 0.8))
+        mat.use_nodes = True
+        nodes, links = mat.node_tree.nodes, mat.node_tree.links
+        bsdf = next(n for n in nodes if n.type == 'BSDF_PRINCIPLED')
+        tex = nodes.new('ShaderNodeTexImage')
+        tex.image, tex.interpolation = img, 'Closest'
+        links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+        links.new(tex.outputs["Alpha"], bsdf.inputs["Alpha"])
+        _set_cut(mat, hashed)
+        if toon:
+            mat.edgelight.shading = 'RAMP'
+        card_ob.data.materials.append(mat)
+        cam = zoo.top_camera(3.0)
+        cam.location.x = 1.0
+        sun = helpers.add_sun((-1.0, 0.0, 1.0), 3.0)  # light travels towards +x and down
+        sun.data.angle = 0.0
+        return scene
+
+    def floor_at(self, px, x):
+        """Mean luminance of a column band of the floor at world x (16 px a unit, x from -2)."""
+        col = int(round((x + 2.0) * 16.0))
+        return float(px[20:44, col - 3:col + 4, :3].mean())
+
+    def check(self, hashed, toon=False):
+        self.scene(hashed, toon)
+        px = np.asarray(helpers.render()["pixels"])
+        shadowed, under_cut, lit = self.floor_at(px, 0.5), self.floor_at(px, 1.5), self.floor_at(px, 3.0)
+        print(f"floor: under the kept half's shadow {shadowed:.4f}, where the cut half's would fall {under_cut:.4f}, "
+              f"lit {lit:.4f}")
+        self.assertGreater(lit, 0.1)
+        self.assertLess(shadowed, 0.05 * lit, "the kept half casts its shadow, seen through the cut half")
+        self.assertAlmostEqual(under_cut / lit, 1.0, delta=0.01, msg="the cut half casts no shadow")
+
+    def test_clipped_card(self):
+        self.check(hashed=False)
+
+    def test_hashed_card_and_a_toon_card(self):
+        self.check(hashed=True)
+        self.check(hashed=False, toon=True)
+
+
 if __name__ == "__main__":
     unittest.main()
