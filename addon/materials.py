@@ -150,9 +150,9 @@ def shading_of(material):
         base = folded.color("Base Color", DEFAULT_COLOR)
         roughness = folded.scalar(0.5, "Roughness")
         metallic = folded.scalar(0.0, "Metallic")
-        if program.outputs:  # the program at the image's mean colour, under a white attribute
-            mean = (*textures.mean_color(image.image), 1.0) if image is not None else (0.0,) * 4
-            at_mean = node_program.run(program, mean, (1.0, 1.0, 1.0, 1.0))
+        if program.outputs:  # the program at its images' mean colours, under a white attribute
+            means = [(*textures.mean_color(i.image), 1.0) for i in program.images]
+            at_mean = node_program.run(program, means, (1.0, 1.0, 1.0, 1.0))
             base = tuple(at_mean["Base Color"][:3])
             metallic, roughness = at_mean["Metallic"][0], at_mean["Roughness"][0]
         # As the Principled BSDF takes them (material_program.glsl): no negative albedo; a chain

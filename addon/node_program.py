@@ -1,10 +1,11 @@
 """Node chains into a Principled BSDF's inputs (docs/addon.md, "Node chains"): RGB, Value, Mix
-(and 3.4's Mix RGB), Math, ColorRamp, Invert, Separate and Combine (RGB, Color, XYZ), Clamp, one
-image (Image Texture) and one colour attribute (Color Attribute, or an Attribute node naming
-one), with Blender's implicit conversions between colours, vectors and floats. The one
+(and 3.4's Mix RGB), Math, ColorRamp, Invert, Separate and Combine (RGB, Color, XYZ), Clamp, up
+to four images (Image Texture) on one UV map and one colour attribute (Color Attribute, or an
+Attribute node naming one), with Blender's implicit conversions between colours, vectors and
+floats. The one
 description of the ops is shaders/material_data.json (EL_OP, EL_MIX, EL_MATH); `apply` here and
 material_program.glsl implement it the same way, which a test pins (test_node_program). A chain
-without the image or the attribute is folded here into its value; one with either becomes the
+without an image or the attribute is folded here into its value; one with either becomes the
 node program the surface, band and corner programs run per pixel (EL_BASE_TEXTURE).
 """
 import math
@@ -17,7 +18,7 @@ OP = shader_specs.enum("material_data.json", "EL_OP")
 MIX = shader_specs.enum("material_data.json", "EL_MIX")
 MATH = shader_specs.enum("material_data.json", "EL_MATH")
 _LIMITS = shader_specs.defines(shader_specs.load("material_data.json"))
-MAX_CODE, MAX_CONST = _LIMITS["EL_MAT_CODE"], _LIMITS["EL_MAT_CONST"]
+MAX_CODE, MAX_CONST, MAX_IMAGES = _LIMITS["EL_MAT_CODE"], _LIMITS["EL_MAT_CONST"], _LIMITS["EL_MAT_IMAGES"]
 MAX_STOPS = 8
 LUMINANCE = (0.2126, 0.7152, 0.0722)  # a colour read as a float (EEVEE's convert_rgba_to_float)
 # Principled inputs a chain with the image may feed (the node program's outputs); the others'
@@ -33,14 +34,20 @@ class Unsupported(Exception):
 class Program:
     """A material's node program. `code`: ((op, a, b, c, sub, s1, s2, s3), ...); operands below
     MAX_CONST index `consts`, from it the result of instruction (operand - MAX_CONST).
-    `outputs`: {input: operand} of the PER_PIXEL inputs (empty: no program). `image`: the
-    material_inputs.ImageInput its IMAGE ops read, or None. `attribute`: the colour attribute its
-    ATTRIBUTE ops read ("": the mesh's render colour attribute), or None."""
+    `outputs`: {input: operand} of the PER_PIXEL inputs (empty: no program). `images`: the
+    material_inputs.ImageInputs its IMAGE ops read (sub // 2 indexes them), all on one UV map.
+    `attribute`: the colour attribute its ATTRIBUTE ops read ("": the mesh's render colour
+    attribute), or None."""
     code: tuple = ()
     consts: tuple = ()
     outputs: dict = field(default_factory=dict)
-    image: object = None
+    images: tuple = ()
     attribute: str = None
+
+    @property
+    def image(self):
+        """The first image (the one whose UV map the mesh gives, and whose alpha may cut), or None."""
+        return self.images[0] if self.images else None
 
 
 # ---- the ops, as material_program.glsl computes them (vec4 values; a float is (f, f, f, 1)) ----
@@ -133,11 +140,12 @@ def _clamp01(v):
     return tuple(min(max(c, 0.0), 1.0) for c in v[:3]) + (v[3],)
 
 
-def apply(op, sub, settings, a, b, c, texel=(0.0, 0.0, 0.0, 0.0), ramp=None, color=(0.0, 0.0, 0.0, 0.0)):
+def apply(op, sub, settings, a, b, c, texels=(), ramp=None, color=(0.0, 0.0, 0.0, 0.0)):
     """One instruction's value from its operands' (vec4 tuples); `ramp`: (positions, colours);
-    `texel` and `color`: the image's and the colour attribute's value."""
+    `texels` and `color`: the images' and the colour attribute's values."""
     if op == OP["IMAGE"]:
-        return _f(texel[3]) if sub == 1 else tuple(texel)
+        texel = texels[sub // 2] if sub // 2 < len(texels) else (0.0, 0.0, 0.0, 0.0)
+        return _f(texel[3]) if sub % 2 == 1 else tuple(texel)
     if op == OP["ATTRIBUTE"]:
         if sub == 1:
             return _f(color[3])
@@ -169,9 +177,12 @@ def apply(op, sub, settings, a, b, c, texel=(0.0, 0.0, 0.0, 0.0), ramp=None, col
     raise ValueError(f"op {op}")
 
 
-def run(program, texel, color=(0.0, 0.0, 0.0, 0.0)):
-    """{input: vec4} of a program's outputs at one texel and colour attribute value: what
-    material_program.glsl computes."""
+def run(program, texels, color=(0.0, 0.0, 0.0, 0.0)):
+    """{input: vec4} of a program's outputs at its images' texels (one per image; one texel
+    alone for a single image) and a colour attribute value: what material_program.glsl
+    computes."""
+    if len(texels) and not hasattr(texels[0], "__len__"):
+        texels = (tuple(texels),)
     regs = []
 
     def value(ref):
@@ -181,7 +192,7 @@ def run(program, texel, color=(0.0, 0.0, 0.0, 0.0)):
         if op == OP["RAMP"]:
             n, first, pos = int(s1), int(s2), int(s3)
             ramp = ([program.consts[pos + k // 4][k % 4] for k in range(n)], [program.consts[first + k] for k in range(n)])
-        regs.append(apply(op, sub, (s1, s2, s3), value(a), value(b), value(c), texel, ramp, color))
+        regs.append(apply(op, sub, (s1, s2, s3), value(a), value(b), value(c), texels, ramp, color))
     return {name: value(ref) for name, ref in program.outputs.items()}
 
 
@@ -208,7 +219,7 @@ class _Compiler:
     """Values of sockets: ('const', vec4) or ('ref', operand); instructions appended as met."""
 
     def __init__(self):
-        self.code, self.consts, self.image, self.attribute, self.memo = [], [], None, None, {}
+        self.code, self.consts, self.images, self.attribute, self.memo = [], [], [], None, {}
 
     def const_ref(self, v):
         v = tuple(float(x) for x in v)
@@ -346,10 +357,14 @@ class _Compiler:
         source = material_inputs.image_node_input(node)
         if source is None:
             raise Unsupported(f"{_describe(node)}: {material_inputs.image_node_problem(node)}")
-        if self.image is not None and source != self.image:
-            raise Unsupported(f"{_describe(node)}: a second image ('{self.image.image.name}' is drawn)")
-        self.image = source
-        return self.emit(OP["IMAGE"], 1 if out.name == "Alpha" else 0)
+        if source not in self.images:
+            if self.images and source.uv_map != self.images[0].uv_map:
+                raise Unsupported(f"{_describe(node)}: another UV map than its first image's "
+                                  f"('{self.images[0].image.name}')")
+            if len(self.images) >= MAX_IMAGES:
+                raise Unsupported(f"{_describe(node)}: more than {MAX_IMAGES} images")
+            self.images.append(source)
+        return self.emit(OP["IMAGE"], 2 * self.images.index(source) + (1 if out.name == "Alpha" else 0))
 
     def _attribute(self, node, out):
         """A Color Attribute node, or an Attribute node of the geometry (its name must be a
@@ -387,7 +402,7 @@ def read(node, names):
             continue
         trial = _Compiler()
         trial.code, trial.consts, trial.memo = list(comp.code), list(comp.consts), dict(comp.memo)
-        trial.image, trial.attribute = comp.image, comp.attribute
+        trial.images, trial.attribute = list(comp.images), comp.attribute
         try:
             val = trial.input(socket)
             if val[0] == 'ref' and name not in PER_PIXEL:
@@ -410,4 +425,5 @@ def read(node, names):
     except Unsupported as e:  # no room left for them: no program, its chains said
         firsts = [(name, _describe(node.inputs[name].links[0].from_node)) for name in outputs]
         return Chains(values, Program(), unread + [(name, f"{first}: {e}") for name, first in firsts])
-    return Chains(values, Program(tuple(comp.code), tuple(comp.consts), outputs, comp.image, comp.attribute), unread)
+    return Chains(values, Program(tuple(comp.code), tuple(comp.consts), outputs, tuple(comp.images), comp.attribute),
+                  unread)

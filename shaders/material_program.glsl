@@ -17,6 +17,42 @@ vec4 el_mat_float(float f)
   return vec4(f, f, f, 1.0);
 }
 
+/* Image i's texel at uv, filtered and extended as its node sets (material.images[i]), as
+ * el_base_texel does by the variant's defines for the image whose alpha cuts (textures.glsl). */
+vec4 el_mat_fetch(int i, ivec2 p, ivec2 size, int extend)
+{
+  if (extend == EL_EXTEND_REPEAT) {
+    p -= size * ivec2(floor(vec2(p) / vec2(size)));
+  }
+  p = clamp(p, ivec2(0), size - 1);
+  switch (i) {
+    case 1: return texelFetch(base_tex1, p, 0);
+    case 2: return texelFetch(base_tex2, p, 0);
+    case 3: return texelFetch(base_tex3, p, 0);
+  }
+  return texelFetch(base_tex, p, 0);
+}
+
+vec4 el_mat_texel(int i, vec2 uv)
+{
+  vec4 how = material.images[i];
+  int extend = int(how.y + 0.5);
+  if (extend == EL_EXTEND_CLIP && (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))))) {
+    return vec4(0.0);
+  }
+  ivec2 size = i == 1 ? textureSize(base_tex1, 0) : (i == 2 ? textureSize(base_tex2, 0) : (i == 3 ? textureSize(base_tex3, 0) : textureSize(base_tex, 0)));
+  vec2 p = uv * vec2(size);
+  if (how.x > 0.5) {
+    return el_mat_fetch(i, ivec2(floor(p)), size, extend);
+  }
+  p -= 0.5;
+  ivec2 b = ivec2(floor(p));
+  vec2 f = p - floor(p);
+  vec4 lo = mix(el_mat_fetch(i, b, size, extend), el_mat_fetch(i, b + ivec2(1, 0), size, extend), f.x);
+  vec4 hi = mix(el_mat_fetch(i, b + ivec2(0, 1), size, extend), el_mat_fetch(i, b + ivec2(1, 1), size, extend), f.x);
+  return mix(lo, hi, f.y);
+}
+
 float el_mat_pow(float a, float b)
 {
   /* EEVEE's math_power over compatible_pow: a negative base only to a whole power. */
@@ -116,10 +152,13 @@ vec4 el_mat_ramp(float fac, bool linear, int count, int first, int pos)
   return el_mat_operand(float(first + count - 1));
 }
 
-vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 texel, vec4 col)
+vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 texels[EL_MAT_IMAGES], vec4 col)
 {
   switch (op) {
-    case EL_OP_IMAGE: return sub == 1 ? el_mat_float(texel.a) : texel;
+    case EL_OP_IMAGE: {
+      vec4 texel = texels[clamp(sub / 2, 0, EL_MAT_IMAGES - 1)];
+      return (sub & 1) == 1 ? el_mat_float(texel.a) : texel;
+    }
     case EL_OP_ATTRIBUTE: {
       if (sub == 1) {
         return el_mat_float(col.a);
@@ -158,12 +197,16 @@ struct ElMaterial {
 
 ElMaterial el_material_at(vec2 uv, vec4 col)
 {
-  vec4 texel = el_base_texel(uv);
+  vec4 texels[EL_MAT_IMAGES];
+  int images = int(material.program.w + 0.5);
+  for (int k = 0; k < EL_MAT_IMAGES; k++) {
+    texels[k] = k < images ? el_mat_texel(k, uv) : vec4(0.0); /* each image sampled once */
+  }
   int count = min(int(material.program.x + 0.5), EL_MAT_CODE);
   for (int i = 0; i < count; i++) {
     vec4 c = material.code[i], p = material.args[i];
     el_mat_reg[i] = el_mat_op(int(c.x + 0.5), int(p.x + 0.5), p.yzw, el_mat_operand(c.y), el_mat_operand(c.z),
-                              el_mat_operand(c.w), texel, col);
+                              el_mat_operand(c.w), texels, col);
   }
   vec3 base = max(el_mat_operand(material.outputs.x).rgb, 0.0); /* no negative albedo, as Cycles' Principled */
   float metallic = clamp(el_mat_operand(material.outputs.y).x, 0.0, 1.0);

@@ -6,6 +6,7 @@ import gpu
 
 from .. import node_program
 from . import shader_specs
+from .texture_variants import EXTEND
 
 MATERIAL_DATA = shader_specs.Block("material_data.json")
 _buffers = {}
@@ -19,7 +20,8 @@ def values(shading):
            "alpha_clip": (t.alpha_threshold if t is not None else 0.5, 0.0, 0.0, 0.0)}
     if t is not None:
         p = t.program
-        out["program"] = (float(len(p.code)), t.f0, t.shininess, 0.0)
+        out["program"] = (float(len(p.code)), t.f0, t.shininess, float(len(p.images)))
+        out["images"] = tuple(v for i in p.images for v in (float(i.closest), float(EXTEND[i.extension]), 0.0, 0.0))
         out["outputs"] = (*(float(p.outputs[k]) for k in node_program.PER_PIXEL), 0.0)
         out["code"] = tuple(float(v) for ins in p.code for v in ins[:4])
         out["args"] = tuple(float(v) for ins in p.code for v in ins[4:])

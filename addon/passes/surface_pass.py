@@ -9,6 +9,9 @@ from .lighting_inputs import NONE
 from .targets import surface_outputs
 from .texture_variants import SURFACE_MODES, texture_defines, texture_key
 
+# The node program's images, in its order (material_program.glsl).
+IMAGE_SAMPLERS = ("base_tex", "base_tex1", "base_tex2", "base_tex3")
+
 
 def shading_uniforms(shader, s):
     """A material slot's colours (materials.Shading), shared by the surface and edge passes, and
@@ -68,11 +71,12 @@ def cull_modes(scene, camera):
 
 def textured_uniforms(shader, s):
     """A textured slot's uniforms: its colours (alpha; the node program in its MaterialData
-    block gives the rest: materials.BaseTexture) and its image."""
+    block gives the rest: materials.BaseTexture) and its images."""
     shading_uniforms(shader, s)
-    source = s.texture.source
-    shader_lib.set_sampler(shader, "base_tex", textures.gpu_texture(source.image) if source is not None
-                           else textures.no_image())
+    images = s.texture.program.images
+    for k, name in enumerate(IMAGE_SAMPLERS):
+        shader_lib.set_sampler(shader, name, textures.gpu_texture(images[k].image) if k < len(images)
+                               else textures.no_image())
 
 
 def draw_surface(targets, scene, gpu_meshes, ubo, whiteout=False, ids=False, rounded=False, culls=None,

@@ -83,6 +83,34 @@ def _misc(tree, tex):
     return comb.outputs[0]
 
 
+# A second image (4 x 1, float, Closest) on the same UV map.
+TEXELS2 = np.array([[0.5, 0.9, 0.2, 1.0], [0.3, 0.3, 0.9, 1.0], [1.0, 0.6, 0.1, 1.0], [0.05, 0.4, 0.7, 1.0]],
+                   np.float32)
+
+
+def _second_image(tree):
+    img = bpy.data.images.get("Texels2")
+    if img is None:
+        img = bpy.data.images.new("Texels2", 4, 1, alpha=True, float_buffer=True)
+        img.pixels.foreach_set(TEXELS2.reshape(-1))
+    node = tree.nodes.new('ShaderNodeTexImage')
+    node.image, node.interpolation = img, 'Closest'
+    return node
+
+
+def _two_images(tree, tex):
+    """The first image screened over the second, by the second's green."""
+    second = _second_image(tree)
+    m = tree.nodes.new('ShaderNodeMixRGB')
+    m.blend_type = 'SCREEN'
+    sep = tree.nodes.new('ShaderNodeSeparateXYZ')
+    tree.links.new(second.outputs["Color"], sep.inputs[0])
+    tree.links.new(sep.outputs["Y"], m.inputs["Fac"])
+    tree.links.new(second.outputs["Color"], m.inputs["Color1"])
+    tree.links.new(tex.outputs["Color"], m.inputs["Color2"])
+    return m.outputs["Color"]
+
+
 def _folded(tree, tex):
     """No image: an RGB times a Value's square (Mix Multiply), folded on the CPU."""
     n, link = tree.nodes, tree.links.new
@@ -110,7 +138,7 @@ CHAINS = ([(f"mix {b}", lambda t, x, b=b: _mix(t, x, b)) for b in MIX_BLENDS]
           + [(f"math {op}", lambda t, x, op=op: _math(t, x, op)) for op in MATH_OPS]
           + [("math POWER clamped", lambda t, x: _math(t, x, 'POWER', clamp=True)),
              ("ramp LINEAR", lambda t, x: _ramp(t, x, 'LINEAR')), ("ramp CONSTANT", lambda t, x: _ramp(t, x, 'CONSTANT')),
-             ("separate, invert, clamp, combine", _misc), ("folded", _folded)])
+             ("separate, invert, clamp, combine", _misc), ("two images", _two_images), ("folded", _folded)])
 
 
 # The colour attribute's value on each of a strip's four faces (a corner attribute, one colour
@@ -223,7 +251,8 @@ class NodeChains(unittest.TestCase):
                 if s.texture is None:  # folded: the Shading's own albedo
                     albedo[k, t], f0 = s.base_color, np.array(s.spec_color)
                 else:
-                    got = el.node_program.run(s.texture.program, tuple(TEXELS[t]))
+                    by_name = {"Texels": tuple(TEXELS[t]), "Texels2": tuple(TEXELS2[t])}
+                    got = el.node_program.run(s.texture.program, [by_name[i.image.name] for i in s.texture.program.images])
                     m = min(max(got["Metallic"][0], 0.0), 1.0)
                     base = np.array(got["Base Color"][:3])
                     negative[k, t] = base.min() < 0.0
@@ -254,19 +283,23 @@ class NodeChains(unittest.TestCase):
               f"over {len(rows)} of {len(CHAINS)} chains x 4 texels (the others negative)")
         self.assertGreater(len(rows), 3 * len(CHAINS))
 
-    def test_a_second_image_and_an_unknown_node_are_said(self):
+    def test_an_image_on_another_uv_map_and_an_unknown_node_are_said(self):
         scene, pairs = strips_scene([("image", lambda t, x: x.outputs["Color"])])
         mat = pairs[0][1][0]
         tree = mat.node_tree
         bsdf = next(n for n in tree.nodes if n.type == 'BSDF_PRINCIPLED')
         other = tree.nodes.new('ShaderNodeTexImage')
         other.image = bpy.data.images.new("Other", 2, 2)
+        uv = tree.nodes.new('ShaderNodeUVMap')
+        uv.uv_map = "Second"
+        tree.links.new(uv.outputs["UV"], other.inputs["Vector"])
         tree.links.new(other.outputs["Color"], bsdf.inputs["Roughness"])
         gamma = tree.nodes.new('ShaderNodeGamma')
         tree.links.new(gamma.outputs[0], bsdf.inputs["Metallic"])
         lines = [m for level, m in helpers.render().get("messages", []) if level == 'WARNING']
         self.assertEqual(len(lines), 1, lines)
-        self.assertIn("Roughness from Image Texture 'Image Texture.001': a second image ('Texels' is drawn)", lines[0])
+        self.assertIn("Roughness from Image Texture 'Image Texture.001': another UV map than its first image's "
+                      "('Texels')", lines[0])
         self.assertIn("Metallic from Gamma (its value", lines[0])
 
 
