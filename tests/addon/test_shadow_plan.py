@@ -19,6 +19,17 @@ camera_mod = addon_module("passes.camera")
 class Mesh:
     box: np.ndarray
     corner_pos: np.ndarray = field(default_factory=lambda: np.zeros((36, 3), np.float32))
+    slot_shading: tuple = ()  # materials.Shading per slot: only its texture's alpha is read here
+
+
+@dataclass
+class Texture:
+    alpha: int  # EL_ALPHA: 0 none, else the image's alpha cuts the surface
+
+
+@dataclass
+class Shading:
+    texture: object = None
 
 
 @dataclass
@@ -177,7 +188,7 @@ class SpotAndCulling(unittest.TestCase):
 
 
 class MergedCasters(unittest.TestCase):
-    def test_small_casters_in_world_space_large_and_hidden_ones_on_their_own(self):
+    def test_small_casters_in_world_space_large_hidden_and_alpha_cut_ones_on_their_own(self):
         rng = np.random.default_rng(3)
         small = box_at((1.0, 2.0, 3.0))
         small.mesh.corner_pos = rng.normal(size=(36, 3)).astype(np.float32)
@@ -186,8 +197,13 @@ class MergedCasters(unittest.TestCase):
         large.mesh.corner_pos = np.zeros((3 * (plan_mod.MERGE_TRIANGLES + 1), 3), np.float32)
         hidden = box_at((5.0, 0.0, 0.0))
         hidden.casts_shadow = False
-        picked, corners = plan_mod.merged_casters(Scene([large, small, hidden], []))
-        self.assertEqual(picked, [1])
+        cut = box_at((-5.0, 0.0, 0.0))  # an image's alpha cuts a slot: its own draws cut it (shadow_pass.cut_key)
+        cut.mesh.slot_shading = (Shading(), Shading(Texture(alpha=1)))
+        plain = box_at((-6.0, 0.0, 0.0))
+        plain.mesh.slot_shading = (Shading(Texture(alpha=0)),)
+        picked, corners = plan_mod.merged_casters(Scene([large, small, hidden, cut, plain], []))
+        self.assertEqual(picked, [1, 4])
+        corners = corners[:len(small.mesh.corner_pos)]
         want = small.mesh.corner_pos.astype(np.float64) @ small.matrix[:3, :3].T + small.matrix[:3, 3]
         np.testing.assert_allclose(corners, want, rtol=1e-6, atol=1e-6)
 
