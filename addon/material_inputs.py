@@ -17,8 +17,9 @@ READ = ("Base Color", "Metallic", "Roughness", "Specular", "Specular IOR Level",
 # (materials.emission_of); a chain EdgeLight cannot fold means a glow it cannot place, so none is
 # drawn, and that is said.
 EMISSION = ("Emission", "Emission Color", "Emission Strength")
-# Inputs that change the look when linked, though EdgeLight uses the mesh's normals.
-LINKED_IGNORED = ("Normal",)
+# The normal's input: a Normal Map in tangent space is drawn (node_program.normal); anything
+# else linked into it is said, and the mesh's normals drawn.
+NORMAL_INPUTS = ("Normal",)
 # Lobes EdgeLight does not draw: (label, weight sockets by version). On when a weight is above 0.
 LOBES = (("Subsurface", ("Subsurface", "Subsurface Weight")),
          ("Transmission", ("Transmission", "Transmission Weight")),
@@ -197,14 +198,14 @@ def unread_inputs(node, chains):
     `chains` (node_program.read) says which linked inputs' chains it cannot evaluate, and why."""
     out = []
     failed = dict(chains.unread)
-    for name in READ + EMISSION + LINKED_IGNORED:
+    for name in READ + EMISSION + NORMAL_INPUTS:
         socket = node.inputs.get(name)
         source = _from_node(socket) if socket is not None else None
         if source is None:
             continue
         if name == "Alpha" and image_alpha(node, chains.program.image):
             continue  # drawn: the image's alpha cuts the surface (EL_TEX_ALPHA)
-        if name in READ + EMISSION and name not in failed:
+        if name not in failed:
             continue  # drawn: folded, or per pixel (node_program)
         what = failed.get(name, _describe(source))
         if name in EMISSION:

@@ -110,7 +110,7 @@ def _principled(material):
 
 def chains_of(node):
     """What the node chains linked into a Principled BSDF's inputs come to (node_program.read)."""
-    return node_program.read(node, material_inputs.READ + material_inputs.EMISSION)
+    return node_program.read(node, material_inputs.READ + material_inputs.EMISSION + material_inputs.NORMAL_INPUTS)
 
 
 def unread_inputs(node):

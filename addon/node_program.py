@@ -21,9 +21,11 @@ _LIMITS = shader_specs.defines(shader_specs.load("material_data.json"))
 MAX_CODE, MAX_CONST, MAX_IMAGES = _LIMITS["EL_MAT_CODE"], _LIMITS["EL_MAT_CONST"], _LIMITS["EL_MAT_IMAGES"]
 MAX_STOPS = 8
 LUMINANCE = (0.2126, 0.7152, 0.0722)  # a colour read as a float (EEVEE's convert_rgba_to_float)
-# Principled inputs a chain with the image may feed (the node program's outputs); the others'
-# chains are folded, and one with the image there is said.
+# Principled inputs a chain with an image may feed (the node program's outputs); the others'
+# chains are folded, and one with an image there is said. Normal: through a Normal Map.
 PER_PIXEL = ("Base Color", "Metallic", "Roughness")
+NORMAL = "Normal"
+FLAT_NORMAL = (0.5, 0.5, 1.0)  # a Normal Map's colour that leaves the normal as it is
 
 
 class Unsupported(Exception):
@@ -34,7 +36,9 @@ class Unsupported(Exception):
 class Program:
     """A material's node program. `code`: ((op, a, b, c, sub, s1, s2, s3), ...); operands below
     MAX_CONST index `consts`, from it the result of instruction (operand - MAX_CONST).
-    `outputs`: {input: operand} of the PER_PIXEL inputs (empty: no program). `images`: the
+    `outputs`: {input: operand} of the PER_PIXEL inputs, and NORMAL's when a Normal Map feeds it
+    (empty: no program). `normal_uv`: the UV map a Normal Map's tangents follow ("": the render
+    one), or None. `images`: the
     material_inputs.ImageInputs its IMAGE ops read (sub // 2 indexes them), all on one UV map.
     `attribute`: the colour attribute its ATTRIBUTE ops read ("": the mesh's render colour
     attribute), or None."""
@@ -43,6 +47,7 @@ class Program:
     outputs: dict = field(default_factory=dict)
     images: tuple = ()
     attribute: str = None
+    normal_uv: str = None
 
     @property
     def image(self):
@@ -169,6 +174,8 @@ def apply(op, sub, settings, a, b, c, texels=(), ramp=None, color=(0.0, 0.0, 0.0
         return _f(a[sub])
     if op == OP["COMBINE"]:
         return (a[0], b[0], c[0], 1.0)
+    if op == OP["NORMAL_MAP"]:
+        return (a[0], a[1], a[2], b[0])
     if op == OP["GRAY"]:
         return _f(_gray(a, sub))
     if op == OP["CLAMP"]:
@@ -203,6 +210,18 @@ def _describe(node):
     return node.bl_label if label == node.bl_label else f"{node.bl_label} '{label}'"
 
 
+def _feeding(socket):
+    """(node, output socket) a linked input reads, through reroutes; (None, None) unlinked."""
+    while socket.is_linked:
+        link = socket.links[0]
+        if not link.is_valid or getattr(link, "is_muted", False):
+            return None, None
+        if link.from_node.type != 'REROUTE':
+            return link.from_node, link.from_socket
+        socket = link.from_node.inputs[0]
+    return None, None
+
+
 def _socket(node, identifier):
     return next(s for s in node.inputs if s.identifier == identifier)
 
@@ -220,6 +239,7 @@ class _Compiler:
 
     def __init__(self):
         self.code, self.consts, self.images, self.attribute, self.memo = [], [], [], None, {}
+        self.normal_uv = None
 
     def const_ref(self, v):
         v = tuple(float(x) for x in v)
@@ -239,7 +259,7 @@ class _Compiler:
     def emit(self, op, sub=0, settings=(0.0, 0.0, 0.0), a=('const', _f(0.0)), b=('const', _f(0.0)),
              c=('const', _f(0.0)), ramp=None):
         """An instruction, or its value when every operand is a constant (folded by `apply`)."""
-        if op not in {OP["IMAGE"], OP["ATTRIBUTE"]} and all(v[0] == 'const' for v in (a, b, c)):
+        if op not in {OP["IMAGE"], OP["ATTRIBUTE"], OP["NORMAL_MAP"]} and all(v[0] == 'const' for v in (a, b, c)):
             return ('const', apply(op, sub, settings, a[1], b[1], c[1], ramp=ramp))
         if len(self.code) >= MAX_CODE:
             raise Unsupported(f"more than {MAX_CODE} nodes drawn per pixel")
@@ -366,6 +386,28 @@ class _Compiler:
             self.images.append(source)
         return self.emit(OP["IMAGE"], 2 * self.images.index(source) + (1 if out.name == "Alpha" else 0))
 
+    def normal(self, socket):
+        """The Principled BSDF's Normal: a Normal Map in tangent space (through reroutes), its
+        Color and Strength chains in a NORMAL_MAP instruction; None where it leaves the normal
+        as it is (unlinked, or a constant flat colour)."""
+        node, out = _feeding(socket)
+        if node is None:
+            return None
+        if node.type != 'NORMAL_MAP':
+            raise Unsupported(_describe(node))
+        if node.mute:
+            raise Unsupported(f"{_describe(node)} is muted")
+        if node.space != 'TANGENT':
+            raise Unsupported(f"{_describe(node)}: its {node.space.title().replace('_', ' ')} space")
+        uv = node.uv_map
+        if self.images and uv != self.images[0].uv_map and (uv or self.images[0].uv_map):
+            raise Unsupported(f"{_describe(node)}: another UV map than its image's ('{self.images[0].image.name}')")
+        color, strength = self.input(node.inputs["Color"]), self.input(node.inputs["Strength"])
+        if color[0] == 'const' and tuple(color[1][:3]) == FLAT_NORMAL:
+            return None
+        self.normal_uv = uv
+        return self.emit(OP["NORMAL_MAP"], a=color, b=strength)
+
     def _attribute(self, node, out):
         """A Color Attribute node, or an Attribute node of the geometry (its name must be a
         colour attribute of the mesh: scene_sync says where it is not). Outputs: Color and
@@ -402,10 +444,12 @@ def read(node, names):
             continue
         trial = _Compiler()
         trial.code, trial.consts, trial.memo = list(comp.code), list(comp.consts), dict(comp.memo)
-        trial.images, trial.attribute = list(comp.images), comp.attribute
+        trial.images, trial.attribute, trial.normal_uv = list(comp.images), comp.attribute, comp.normal_uv
         try:
-            val = trial.input(socket)
-            if val[0] == 'ref' and name not in PER_PIXEL:
+            val = trial.normal(socket) if name == NORMAL else trial.input(socket)
+            if val is None:
+                continue  # a Normal Map that leaves the normal as it is
+            if val[0] == 'ref' and name not in PER_PIXEL + (NORMAL,):
                 first = _describe(socket.links[0].from_node)
                 raise Unsupported(f"{first}: per pixel, drawn only into Base Color, Metallic and Roughness")
         except Unsupported as e:
@@ -425,5 +469,5 @@ def read(node, names):
     except Unsupported as e:  # no room left for them: no program, its chains said
         firsts = [(name, _describe(node.inputs[name].links[0].from_node)) for name in outputs]
         return Chains(values, Program(), unread + [(name, f"{first}: {e}") for name, first in firsts])
-    return Chains(values, Program(tuple(comp.code), tuple(comp.consts), outputs, tuple(comp.images), comp.attribute),
-                  unread)
+    return Chains(values, Program(tuple(comp.code), tuple(comp.consts), outputs, tuple(comp.images), comp.attribute,
+                                  comp.normal_uv), unread)

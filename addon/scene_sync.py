@@ -42,6 +42,7 @@ class MeshExtract:
     corner_uv: dict = field(default_factory=dict)  # UV map name ("": active render) -> (3T, 2), for textured slots
     missing_uv: frozenset = frozenset()         # UV map names a slot's image asked for that the mesh lacks
     corner_color: dict = field(default_factory=dict)  # colour attribute name ("": render) -> (3T, 4), for node programs
+    corner_tangent: dict = field(default_factory=dict)  # UV map name ("": render) -> (3T, 4) tangent, bitangent sign
     # What is computed from the chosen edges (rounded_outline.from_edges: the fillets' outline
     # records), by name: (the edges it was computed from, the value). One dict shared by the
     # copies a render cache makes, so a reused extraction whose edges were not chosen again does
@@ -252,13 +253,16 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     shading = [shading_of(mat) for mat in materials] or [shading_of(None)]
     shading, corner_uv, missing_uv = textured_corners(name, mesh, shading, tri_loops)
     shading, corner_color = colored_corners(name, mesh, shading, tri_loops)
+    shading, corner_tangent = tangent_corners(name, mesh, shading, tri_loops, positions[tri_verts.reshape(-1)], corner_nor)
     key = content = None
     if cache is not None or same_content is not None:
         digest = render_cache.fingerprint((positions, tri_verts, tri_loops, edges, tri_edges, tri_slot, marks, bevel,
                                            tri_poly, polygons.start, polygons.total, polygons.loop_vert,
                                            polygons.loop_edge, corner_nor, *(corner_uv[k] for k in sorted(corner_uv)),
                                            *(corner_color[k] for k in sorted(corner_color)),
-                                           np.frombuffer(repr((sorted(corner_uv), sorted(corner_color))).encode(), np.uint8)))
+                                           *(corner_tangent[k] for k in sorted(corner_tangent)),
+                                           np.frombuffer(repr((sorted(corner_uv), sorted(corner_color),
+                                                               sorted(corner_tangent))).encode(), np.uint8)))
         # Shading follows from the materials alone within a render: their names decide.
         content = (id(lib), digest, tuple(s.material for s in shading))
         if same_content is not None and content in same_content:
@@ -287,7 +291,7 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     slot_triangles = {int(s): order[tri_slot[order] == s] for s in np.unique(tri_slot)}
     out = MeshExtract(name, positions[tri_verts.reshape(-1)], np.ascontiguousarray(corner_nor, np.float32),
                       slot_triangles, shading, info=info, corner_uv=corner_uv, missing_uv=frozenset(missing_uv),
-                      corner_color=corner_color)
+                      corner_color=corner_color, corner_tangent=corner_tangent)
     # The classification, kept so a material change can re-choose edges without a native call.
     # The id the surface pass writes for each triangle (passes/frame.py): its batch's first id
     # plus its place in the batch, since the slots' batches are drawn in this order.
@@ -409,6 +413,58 @@ def colored_corners(name, mesh, shading, tri_loops):
                 s = dataclasses.replace(s, note="; ".join(n for n in (s.note, note) if n))
         out.append(s)
     return out, corner_color
+
+
+def tangent_corners(name, mesh, shading, tri_loops, corner_pos, corner_nor):
+    """(shading, {UV map name: (3T, 4) corner tangents and bitangent signs}) for the slots whose
+    node program has a Normal Map: Blender's own (mikktspace, Mesh.calc_tangents, as EEVEE's),
+    or on a mesh with n-gons, which it refuses, each triangle's from its UVs. A mesh without
+    the UV map keeps its normals there, and the slot's note says so."""
+    out_tangent, out = {}, []
+    for s in shading:
+        uv_name = s.texture.program.normal_uv if s.texture is not None else None
+        if uv_name is not None and uv_name not in out_tangent:
+            layer = mesh.uv_layers.get(uv_name) if uv_name else render_uv_layer(mesh)
+            if layer is None:
+                which = f"UV map '{uv_name}'" if uv_name else "UV map"
+                note = f"{name}: material '{s.material}' has a Normal Map on a {which} the mesh does not have; not drawn"
+                s = dataclasses.replace(s, note="; ".join(n for n in (s.note, note) if n))
+                out.append(s)
+                continue
+            loops = tri_loops.reshape(-1)
+            # Read before calc_tangents: on 5.0 a refused call leaves the layer's data unreadable.
+            uv = _foreach(layer.data, "uv", np.float32, 2)[loops]
+            try:
+                mesh.calc_tangents(uvmap=layer.name)
+                tangent = _foreach(mesh.loops, "tangent", np.float32, 3)[loops]
+                sign = _foreach(mesh.loops, "bitangent_sign", np.float32)[loops]
+            except RuntimeError:  # n-gons
+                tangent, sign = triangle_tangents(corner_pos, uv, corner_nor)
+            out_tangent[uv_name] = np.ascontiguousarray(np.concatenate([tangent, sign[:, None]], axis=1), np.float32)
+        out.append(s)
+    return out, out_tangent
+
+
+def triangle_tangents(corner_pos, corner_uv, corner_nor):
+    """((3T, 3) unit tangents, (3T,) bitangent signs) per corner from each triangle's positions
+    and UVs (the direction of increasing u), made orthogonal to the corner's normal; zero where
+    the UVs are degenerate."""
+    p = np.asarray(corner_pos, np.float64).reshape(-1, 3, 3)
+    uv = np.asarray(corner_uv, np.float64).reshape(-1, 3, 2)
+    e1, e2 = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    d1, d2 = uv[:, 1] - uv[:, 0], uv[:, 2] - uv[:, 0]
+    det = d1[:, 0] * d2[:, 1] - d2[:, 0] * d1[:, 1]
+    ok = np.abs(det) > 1e-20
+    r = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)[:, None]
+    t = (e1 * d2[:, 1:2] - e2 * d1[:, 1:2]) * r
+    b = (e2 * d1[:, 0:1] - e1 * d2[:, 0:1]) * r
+    t, b = np.repeat(t, 3, axis=0), np.repeat(b, 3, axis=0)
+    n = np.asarray(corner_nor, np.float64)
+    t = t - n * np.sum(n * t, axis=1, keepdims=True)
+    length = np.linalg.norm(t, axis=1, keepdims=True)
+    t = np.where(length > 1e-20, t / np.where(length > 1e-20, length, 1.0), 0.0)
+    sign = np.where(np.sum(np.cross(n, t) * b, axis=1) < 0.0, -1.0, 1.0)
+    return t.astype(np.float32), sign.astype(np.float32)
 
 
 def light_of(ob, matrix):

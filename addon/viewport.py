@@ -335,12 +335,14 @@ class ViewportState:
 
 def slot_corner_inputs(shading, missing=frozenset()):
     """Per slot, the UV map its image reads (None without one, or where it is among `missing`,
-    the maps the mesh lacked) and the colour attribute its node program reads (None without
-    one): what its batches' UVs and colours are."""
+    the maps the mesh lacked), the colour attribute its node program reads and the UV map its
+    Normal Map's tangents follow (None without): what its batches' UVs, colours and tangents
+    are."""
     def uv(s):
         source = s.texture.source if s.texture is not None else None
         return source.uv_map if source is not None and source.uv_map not in missing else None
-    return tuple((uv(s), s.texture.program.attribute if s.texture is not None else None) for s in shading)
+    return tuple((uv(s), s.texture.program.attribute if s.texture is not None else None,
+                  s.texture.program.normal_uv if s.texture is not None else None) for s in shading)
 
 
 def scene_signature(state, scene):

@@ -178,6 +178,7 @@ vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 texels[EL_M
     case EL_OP_INVERT: return vec4(a.rgb + b.x * (1.0 - 2.0 * a.rgb), a.a);
     case EL_OP_SEPARATE: return el_mat_float(a[clamp(sub, 0, 3)]);
     case EL_OP_COMBINE: return vec4(a.x, b.x, c.x, 1.0);
+    case EL_OP_NORMAL_MAP: return vec4(a.rgb, b.x);
     case EL_OP_GRAY: return el_mat_float(sub == 0 ? dot(a.rgb, vec3(0.2126, 0.7152, 0.0722)) : (a.r + a.g + a.b) / 3.0);
     case EL_OP_CLAMP: {
       float lo = sub == 0 ? b.x : min(b.x, c.x), hi = sub == 0 ? c.x : max(b.x, c.x);
@@ -193,6 +194,7 @@ struct ElMaterial {
   vec3 albedo;
   vec3 f0;
   float n;
+  vec4 normal_map; /* a Normal Map's colour (rgb) and strength (a); a < 0: none */
 };
 
 ElMaterial el_material_at(vec2 uv, vec4 col)
@@ -216,6 +218,24 @@ ElMaterial el_material_at(vec2 uv, vec4 col)
   m.f0 = vec3(material.program.y * (1.0 - metallic)) + base * metallic;
   float alpha = max(roughness, 1e-3) * max(roughness, 1e-3);
   m.n = material.program.z >= 0.0 ? material.program.z : clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 10000.0);
+  m.normal_map = material.outputs.w >= 0.0 ? el_mat_operand(material.outputs.w) : vec4(0.0, 0.0, 0.0, -1.0);
   return m;
+}
+
+/* EEVEE's node_normal_map and its strength's mix: the colour as a tangent-space normal (2c - 1)
+ * on the frame (T, sign N x T, N) of the corner-interpolated tangent `tangent` (xyz, w the
+ * bitangent's sign), the frame turned round with a face seen from behind; the mesh's normal N
+ * where there is no tangent. */
+vec3 el_normal_map(vec3 N, bool front, vec4 tangent, vec4 normal_map)
+{
+  if (!(dot(tangent.xyz, tangent.xyz) > 1e-12)) {
+    return N;
+  }
+  tangent *= front ? 1.0 : -1.0;
+  vec3 T = normalize(tangent.xyz);
+  vec3 B = tangent.w * cross(N, T);
+  vec3 c = 2.0 * normal_map.rgb - 1.0;
+  vec3 mapped = normalize(c.x * T + c.y * B + c.z * N);
+  return normalize(mix(N, mapped, max(normal_map.a, 0.0)));
 }
 #endif

@@ -99,6 +99,9 @@ void main()
   albedo = m.albedo;
   spec = m.f0;
   n = m.n;
+  if (m.normal_map.a >= 0.0) {
+    N = el_normal_map(N, front, surface_tan, m.normal_map);
+  }
 #endif
   /* The world: its irradiance on the albedo, its prefiltered radiance around the reflection
    * times the lobe's directional albedo (the split sum; environment.glsl). */

@@ -9,6 +9,9 @@ void main()
   gl_Position = frame.projection * v;
   surface_uv = uv;   /* zero where the slot draws no image (batches.slot_uv) */
   surface_col = col; /* the colour attribute its node program reads, zero without one (batches.slot_colors) */
+  /* A Normal Map's tangent (batches.slot_tangents), turned with the object as EEVEE turns it;
+   * the bitangent's sign flips with a mirroring transform, as EEVEE's ObjectInfo sign does. */
+  surface_tan = vec4(mat3(model) * tan.xyz, tan.w * (determinant(mat3(model)) < 0.0 ? -1.0 : 1.0));
   /* Three vertices per triangle, in order, whether all are drawn or an indexed subset
    * (passes/batches.py): the triangle's number in its slot's batch. */
   surface_tri = float(gl_VertexID / 3);

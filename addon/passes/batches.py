@@ -33,7 +33,8 @@ def surface_buffers(extract):
         corners = (tris[:, None] * 3 + order).reshape(-1)
         sign = np.where(np.repeat(flipped, 3), -1.0, 1.0).astype(np.float32)[:, None]
         out[slot] = _vertbuf({"pos": extract.corner_pos[corners], "nor": extract.corner_nor[corners] * sign,
-                              "uv": slot_uv(extract, slot, corners), "col": slot_colors(extract, slot, corners)})
+                              "uv": slot_uv(extract, slot, corners), "col": slot_colors(extract, slot, corners),
+                              "tan": slot_tangents(extract, slot, corners, flipped)})
     return out
 
 
@@ -42,6 +43,20 @@ def slot_uv(extract, slot, corners):
     surface buffer has the attribute the surface program declares."""
     uv = _slot_uv(extract, slot)
     return uv[corners] if uv is not None else np.zeros((len(corners), 2), np.float32)
+
+
+def slot_tangents(extract, slot, corners, flipped):
+    """The tangents its Normal Map follows at a slot's corners (MeshExtract.corner_tangent), zero
+    without one. A triangle wound the other way round has its normals negated (surface_buffers):
+    its bitangent sign is too, which keeps the bitangent, sign x N x T, as it was."""
+    texture = extract.slot_shading[slot].texture
+    uv = texture.program.normal_uv if texture is not None else None
+    tan = extract.corner_tangent.get(uv) if uv is not None else None
+    if tan is None:
+        return np.zeros((len(corners), 4), np.float32)
+    out = tan[corners].copy()
+    out[:, 3] *= np.where(np.repeat(flipped, 3), -1.0, 1.0)
+    return out
 
 
 def slot_colors(extract, slot, corners):

@@ -22,7 +22,8 @@ def values(shading):
         p = t.program
         out["program"] = (float(len(p.code)), t.f0, t.shininess, float(len(p.images)))
         out["images"] = tuple(v for i in p.images for v in (float(i.closest), float(EXTEND[i.extension]), 0.0, 0.0))
-        out["outputs"] = (*(float(p.outputs[k]) for k in node_program.PER_PIXEL), 0.0)
+        out["outputs"] = (*(float(p.outputs[k]) for k in node_program.PER_PIXEL),
+                          float(p.outputs.get(node_program.NORMAL, -1)))
         out["code"] = tuple(float(v) for ins in p.code for v in ins[:4])
         out["args"] = tuple(float(v) for ins in p.code for v in ins[4:])
         out["consts"] = tuple(float(v) for c in p.consts for v in c)

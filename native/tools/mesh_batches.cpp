@@ -78,6 +78,7 @@ SurfaceCorners surface_corners(const LoadedMesh& m, float smooth_deg) {
     }
     out.uv.assign(6 * tris, 0.0f);
     out.col.assign(12 * tris, 0.0f);
+    out.tan.assign(12 * tris, 0.0f);
     return out;
 }
 

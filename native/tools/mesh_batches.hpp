@@ -16,6 +16,7 @@ struct SurfaceCorners {
     std::vector<float> pos, nor;  // xyz per corner
     std::vector<float> uv;        // 2 per corner, zero: this renderer draws no image (EL_BASE_TEXTURE)
     std::vector<float> col;       // 4 per corner, zero: nor a node program's colour attribute
+    std::vector<float> tan;       // 4 per corner, zero: nor a Normal Map's tangent
 };
 
 // Rounded edges: manifold, not degenerate, angle between face normals above the threshold (the

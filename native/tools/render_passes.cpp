@@ -101,7 +101,7 @@ public:
     Uploaded(const Scene& s, const Program& surface, const Program& edge)
         : scene(s), quads(edge_quads(s.edges, s.material.radius, kProvoking)),
           surface_vao(surface, {{"pos", &s.surface.pos, 3}, {"nor", &s.surface.nor, 3}, {"uv", &s.surface.uv, 2},
-                                {"col", &s.surface.col, 4}}),
+                                {"col", &s.surface.col, 4}, {"tan", &s.surface.tan, 4}}),
           edge_vao(edge,
                    {{"p0", &quads.p0, 3}, {"p1", &quads.p1, 3}, {"n1", &quads.n1, 3}, {"n2", &quads.n2, 3},
                     {"corner", &quads.corner, 4}, {"faces", &quads.faces, 2}, {"ends", &quads.ends, 4},

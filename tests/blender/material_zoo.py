@@ -118,8 +118,7 @@ def textured_prop():
     tree.links.new(bump.outputs["Normal"], _principled(mat).inputs["Normal"])
     crate.data.materials.append(mat)
     _floor()
-    return Zoo("textured_prop", "a UV-mapped crate with an image in Base Color and a Normal Map", True,
-               ("Normal from Normal Map",))
+    return Zoo("textured_prop", "a UV-mapped crate with an image in Base Color and a Normal Map", True, ())
 
 
 def vertex_coloured_low_poly():

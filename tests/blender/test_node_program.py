@@ -459,6 +459,106 @@ class PastWhatItCanDraw(unittest.TestCase):
         self.assertEqual(s.shininess, helpers.addon().materials.shininess_from_roughness(0.5))
 
 
+class NormalMaps(unittest.TestCase):
+    """A Normal Map (tangent space) of a 4 x 1 Non-Color image on a flat quad seen from above,
+    its UVs along x and y (tangent +X, bitangent +Y), lit by a sun and nothing else: each
+    texel's brightness is the albedo x E / pi x N.L of its own normal, the normal the image
+    encodes (2c - 1), held to the closed form and to Cycles."""
+    # Tilted at most 30 degrees: past 45, seen from above, Cycles bends a normal whose mirror
+    # direction would graze the surface (its valid-reflection correction), which EEVEE does not.
+    NORMALS = np.array([[0.0, 0.0, 1.0], [0.5, 0.0, 0.75 ** 0.5], [-0.4, -0.2, 0.8 ** 0.5], [0.0, 0.5, 0.75 ** 0.5]])
+    LIGHT = np.array([0.5, 0.3, 1.0]) / np.linalg.norm([0.5, 0.3, 1.0])
+
+    def setUp(self):
+        helpers.needs_gpu()
+
+    def scene(self, strength=1.0, mirrored=False):
+        scene = helpers.empty_scene(128, 32, highlights=False)
+        helpers.set_world_color(scene, (0.0, 0.0, 0.0))
+        bpy.ops.mesh.primitive_plane_add(size=2.0)
+        ob = bpy.context.object
+        if mirrored:  # mirrored across x: u runs along -x, and the bitangent's sign flips with the transform
+            ob.scale = (-1.0, 1.0, 1.0)
+        cam = helpers.add_camera((0.0, 0.0, 20.0), (0.0, 0.0, 0.0))
+        cam.rotation_euler = (0.0, 0.0, 0.0)
+        cam.data.type, cam.data.ortho_scale, cam.data.clip_end = 'ORTHO', 2.0, 40.0
+        sun = helpers.add_sun(tuple(self.LIGHT), 3.0)
+        sun.data.angle = 0.0
+        img = bpy.data.images.new("Normals", 4, 1, float_buffer=True)
+        img.colorspace_settings.name = 'Non-Color'
+        px = np.concatenate([(self.NORMALS + 1.0) / 2.0, np.ones((4, 1))], axis=1).astype(np.float32)
+        img.pixels.foreach_set(px.reshape(-1))
+        mat = bpy.data.materials.new("Bumpy")
+        mat.use_nodes = True
+        tree = mat.node_tree
+        bsdf = next(n for n in tree.nodes if n.type == 'BSDF_PRINCIPLED')
+        bsdf.inputs["Base Color"].default_value = (0.8, 0.8, 0.8, 1.0)
+        for name in ("Specular", "Specular IOR Level"):
+            if name in bsdf.inputs:
+                bsdf.inputs[name].default_value = 0.0
+        tex = tree.nodes.new('ShaderNodeTexImage')
+        tex.image, tex.interpolation = img, 'Closest'
+        nmap = tree.nodes.new('ShaderNodeNormalMap')
+        nmap.inputs["Strength"].default_value = strength
+        tree.links.new(tex.outputs["Color"], nmap.inputs["Color"])
+        tree.links.new(nmap.outputs["Normal"], bsdf.inputs["Normal"])
+        ob.data.materials.append(mat)
+        return scene
+
+    def texels(self, px):
+        return np.array([px[16, 16 + 32 * t, :3] for t in range(4)])
+
+    def expected(self, strength=1.0, flip_x=False):
+        n = self.NORMALS * ([-1.0, 1.0, 1.0] if flip_x else 1.0)
+        n = (1.0 - strength) * np.array([0.0, 0.0, 1.0]) + strength * n
+        n /= np.linalg.norm(n, axis=1, keepdims=True)
+        return 0.8 * 3.0 / np.pi * np.maximum(n @ self.LIGHT, 0.0)
+
+    def test_normals_from_the_image(self):
+        scene = self.scene()
+        rec = helpers.render()
+        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+        ours = self.texels(np.asarray(rec["pixels"]))
+        want = self.expected()
+        theirs = self.texels(cycles_pixels(scene, samples=4))
+        print(f"normal map: drawn {ours[:, 0]}, closed form {want}, Cycles {theirs[:, 0]}")
+        np.testing.assert_allclose(ours, np.repeat(want[:, None], 3, axis=1), rtol=2e-3)
+        np.testing.assert_allclose(theirs, np.repeat(want[:, None], 3, axis=1), rtol=1e-2)
+
+    def test_an_ngon_takes_its_triangles_tangents(self):
+        """A pentagon (Blender computes no tangents for n-gons): its triangles' own tangents
+        from their UVs (scene_sync.triangle_tangents), here +X, under a constant tilted colour."""
+        scene = self.scene()
+        ob = next(o for o in scene.objects if o.type == 'MESH')
+        angles = np.radians(90.0 + 72.0 * np.arange(5))
+        verts = [(2.0 * np.cos(a), 2.0 * np.sin(a), 0.0) for a in angles]
+        mesh = bpy.data.meshes.new("Pentagon")
+        mesh.from_pydata(verts, [], [tuple(range(5))])
+        uv = mesh.uv_layers.new(name="UVMap")
+        uv.data.foreach_set("uv", np.array([((x + 2.0) / 4.0, (y + 2.0) / 4.0) for x, y, _ in verts], np.float32).reshape(-1))
+        mesh.materials.append(ob.data.materials[0])
+        ob.data = mesh
+        tree = mesh.materials[0].node_tree
+        nmap = next(n for n in tree.nodes if n.type == 'NORMAL_MAP')
+        tree.links.remove(nmap.inputs["Color"].links[0])
+        n = self.NORMALS[1]
+        nmap.inputs["Color"].default_value = (*((n + 1.0) / 2.0), 1.0)
+        rec = helpers.render()
+        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+        got = np.asarray(rec["pixels"])[16, 64, :3]
+        np.testing.assert_allclose(got, self.expected()[1], rtol=2e-3)
+
+    def test_strength_and_a_mirrored_object(self):
+        """Strength 0.5 mixes the mapped normal halfway back to the mesh's (then normalised); a
+        mirrored object (scale x -1) maps its u along -x: the tangent turns with it."""
+        self.scene(strength=0.5)
+        ours = self.texels(np.asarray(helpers.render()["pixels"]))
+        np.testing.assert_allclose(ours, np.repeat(self.expected(0.5)[:, None], 3, axis=1), rtol=2e-3)
+        self.scene(mirrored=True)
+        ours = self.texels(np.asarray(helpers.render()["pixels"]))[::-1]  # the image runs right to left
+        np.testing.assert_allclose(ours, np.repeat(self.expected(flip_x=True)[:, None], 3, axis=1), rtol=2e-3)
+
+
 def _rough_metal(tree, tex, bsdf):
     """Metallic 1, Roughness the image's green."""
     bsdf.inputs["Metallic"].default_value = 1.0
