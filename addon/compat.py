@@ -97,6 +97,16 @@ def alpha_blend(material):
     return getattr(material, "blend_method", 'OPAQUE'), float(getattr(material, "alpha_threshold", 0.5))
 
 
+def shadow_mode(material):
+    """How a material casts shadows in EEVEE: 'OPAQUE' (its whole surface), 'CUT' (as its alpha
+    cuts it) or 'NONE'. 3.4: its Shadow Mode (Clip and Hashed cut); 4.2+ (EEVEE Next): its
+    Transparent Shadows (on by default)."""
+    if hasattr(material, "surface_render_method"):
+        return 'CUT' if getattr(material, "use_transparent_shadow", True) else 'OPAQUE'
+    method = getattr(material, "shadow_method", 'OPAQUE')
+    return {'NONE': 'NONE', 'CLIP': 'CUT', 'HASHED': 'CUT'}.get(method, 'OPAQUE')
+
+
 def write_pass(render_pass, pixels):
     """pixels: (h * w, 4) float32. Newer versions take a flat array, 3.4 a 2-D one."""
     try:

@@ -53,6 +53,7 @@ class Shading:
     pass_index: int = 0    # the material's Pass Index (the Material Index render pass)
     texture: object = None  # BaseTexture: an image drawn into Base Color by the surface pass
     emission: tuple = (0.0, 0.0, 0.0)  # Emission colour x strength, scene-linear radiance
+    shadow: str = 'OPAQUE'  # compat.shadow_mode: 'OPAQUE', 'CUT' (by its image's alpha) or 'NONE'
 
 
 @dataclass(frozen=True)
@@ -193,7 +194,7 @@ def shading_of(material):
                if program is not None and program.outputs else None)
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full,
-                   int(material.pass_index), texture, emission)
+                   int(material.pass_index), texture, emission, compat.shadow_mode(material))
 
 
 def _alpha_mode(material, node, image):

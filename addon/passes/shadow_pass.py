@@ -54,8 +54,8 @@ def _merged_batch(corners):
 
 def cut_key(s):
     """The texture key (texture_variants.texture_key) of a slot that casts only where its image's
-    alpha keeps its surface, or None."""
-    cuts = s.texture is not None and s.texture.alpha and s.texture.source is not None
+    alpha keeps its surface (its material's shadow mode 'CUT': compat.shadow_mode), or None."""
+    cuts = s.shadow == 'CUT' and s.texture is not None and s.texture.alpha and s.texture.source is not None
     return texture_key(s, SURFACE_MODES["PHONG"]) if cuts else None
 
 
@@ -95,6 +95,8 @@ def draw(plan, scene, gpu_meshes, maps):
                 gm = gpu_meshes[id(inst.mesh)]
                 cut = []
                 for slot, batch in gm.surface.items():
+                    if gm.extract.slot_shading[slot].shadow == 'NONE':
+                        continue  # its material casts none
                     key = cut_key(gm.extract.slot_shading[slot])
                     if key is None:
                         batch.draw(shader)

@@ -19,17 +19,12 @@ camera_mod = addon_module("passes.camera")
 class Mesh:
     box: np.ndarray
     corner_pos: np.ndarray = field(default_factory=lambda: np.zeros((36, 3), np.float32))
-    slot_shading: tuple = ()  # materials.Shading per slot: only its texture's alpha is read here
-
-
-@dataclass
-class Texture:
-    alpha: int  # EL_ALPHA: 0 none, else the image's alpha cuts the surface
+    slot_shading: tuple = ()  # materials.Shading per slot: only its shadow mode is read here
 
 
 @dataclass
 class Shading:
-    texture: object = None
+    shadow: str = 'OPAQUE'  # compat.shadow_mode
 
 
 @dataclass
@@ -198,10 +193,12 @@ class MergedCasters(unittest.TestCase):
         hidden = box_at((5.0, 0.0, 0.0))
         hidden.casts_shadow = False
         cut = box_at((-5.0, 0.0, 0.0))  # an image's alpha cuts a slot: its own draws cut it (shadow_pass.cut_key)
-        cut.mesh.slot_shading = (Shading(), Shading(Texture(alpha=1)))
+        cut.mesh.slot_shading = (Shading(), Shading('CUT'))
+        none = box_at((-7.0, 0.0, 0.0))  # a slot whose material casts none
+        none.mesh.slot_shading = (Shading('NONE'),)
         plain = box_at((-6.0, 0.0, 0.0))
-        plain.mesh.slot_shading = (Shading(Texture(alpha=0)),)
-        picked, corners = plan_mod.merged_casters(Scene([large, small, hidden, cut, plain], []))
+        plain.mesh.slot_shading = (Shading(),)
+        picked, corners = plan_mod.merged_casters(Scene([large, small, hidden, cut, plain, none], []))
         self.assertEqual(picked, [1, 4])
         corners = corners[:len(small.mesh.corner_pos)]
         want = small.mesh.corner_pos.astype(np.float64) @ small.matrix[:3, :3].T + small.matrix[:3, 3]

@@ -116,9 +116,23 @@ def textured_prop():
     tree.links.new(tex.outputs["Color"], _principled(mat).inputs["Base Color"])
     bump = tree.nodes.new("ShaderNodeNormalMap")
     tree.links.new(bump.outputs["Normal"], _principled(mat).inputs["Normal"])
+    # Its normal map: a grid of round bumps, 4 a side, as a baked tangent-space image (Non-Color).
+    n = 128
+    u, v = np.meshgrid((np.arange(n) + 0.5) / n, (np.arange(n) + 0.5) / n)
+    slope = 0.6 * 2.0 * np.pi * 4.0
+    dx = slope * np.cos(2.0 * np.pi * 4.0 * u) * np.sin(2.0 * np.pi * 4.0 * v) / (2.0 * np.pi * 4.0)
+    dy = slope * np.sin(2.0 * np.pi * 4.0 * u) * np.cos(2.0 * np.pi * 4.0 * v) / (2.0 * np.pi * 4.0)
+    normal = np.stack([-dx, -dy, np.ones_like(dx)], axis=-1)
+    normal /= np.linalg.norm(normal, axis=-1, keepdims=True)
+    bumps = bpy.data.images.new("Bumps", n, n, float_buffer=True)
+    bumps.colorspace_settings.name = 'Non-Color'
+    bumps.pixels.foreach_set(np.concatenate([(normal + 1.0) / 2.0, np.ones((n, n, 1))], axis=-1).astype(np.float32).reshape(-1))
+    bump_tex = tree.nodes.new("ShaderNodeTexImage")
+    bump_tex.image = bumps
+    tree.links.new(bump_tex.outputs["Color"], bump.inputs["Color"])
     crate.data.materials.append(mat)
     _floor()
-    return Zoo("textured_prop", "a UV-mapped crate with an image in Base Color and a Normal Map", True, ())
+    return Zoo("textured_prop", "a UV-mapped crate with an image in Base Color and a bumpy Normal Map", True, ())
 
 
 def vertex_coloured_low_poly():
@@ -164,13 +178,16 @@ def alpha_clipped_cards():
     tex.image = leaf
     tree.links.new(tex.outputs["Color"], _principled(mat).inputs["Base Color"])
     tree.links.new(tex.outputs["Alpha"], _principled(mat).inputs["Alpha"])
-    if hasattr(mat, "blend_method"):
-        mat.blend_method = 'CLIP'
+    if hasattr(mat, "surface_render_method"):
+        mat.use_transparent_shadow = True  # the leaves' shadows (4.2+'s default)
+    elif hasattr(mat, "blend_method"):
+        mat.blend_method = mat.shadow_method = 'CLIP'  # the leaves' shadows, as a foliage artist sets them
     for k in range(3):
         bpy.ops.mesh.primitive_plane_add(size=1.2, location=((k - 1) * 0.9, 0.3 * k, 0.9), rotation=(math.pi / 2, 0.0, 0.3 * k))
         bpy.context.object.data.materials.append(mat)
     _floor(rgb=(0.45, 0.35, 0.25))
-    return Zoo("alpha_cards", "foliage cards: an image's alpha clipped (dithered on 4.2+)", False, ())
+    return Zoo("alpha_cards", "foliage cards: an image's alpha clipped (dithered on 4.2+), casting the leaves' shadows",
+               False, ())
 
 
 def emissive_panel():

@@ -105,12 +105,16 @@ class ImageAlpha(unittest.TestCase):
         self.assertIn("blended alpha is drawn hashed", said[0])
 
 
-def _set_cut(mat, hashed=False):
-    """Alpha Clip at 1/2 (3.4), or hashed: Alpha Hashed (3.4) / Dithered (4.2+)."""
+def _set_cut(mat, hashed=False, shadow='CUT'):
+    """Alpha Clip at 1/2 (3.4), or hashed: Alpha Hashed (3.4) / Dithered (4.2+); its shadow cut
+    as its surface (3.4: Shadow Mode Clip or Hashed; 4.2+: Transparent Shadows), whole
+    ('OPAQUE') or none ('NONE', 3.4 only)."""
     if hasattr(mat, "surface_render_method"):
         mat.surface_render_method = 'DITHERED'
+        mat.use_transparent_shadow = shadow == 'CUT'
     else:
         mat.blend_method, mat.alpha_threshold = ('HASHED' if hashed else 'CLIP'), 0.5
+        mat.shadow_method = {'CUT': mat.blend_method}.get(shadow, shadow)
 
 
 class CutShadows(unittest.TestCase):
@@ -121,7 +125,7 @@ class CutShadows(unittest.TestCase):
     def setUp(self):
         helpers.needs_gpu()
 
-    def scene(self, hashed, toon=False):
+    def scene(self, hashed, toon=False, shadow='CUT'):
         scene = helpers.empty_scene(96, 64, highlights=False)
         helpers.set_world_color(scene, (0.0, 0.0, 0.0))
         bpy.ops.mesh.primitive_plane_add(size=20.0)
@@ -139,7 +143,7 @@ class CutShadows(unittest.TestCase):
         tex.image, tex.interpolation = img, 'Closest'
         links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
         links.new(tex.outputs["Alpha"], bsdf.inputs["Alpha"])
-        _set_cut(mat, hashed)
+        _set_cut(mat, hashed, shadow)
         if toon:
             mat.edgelight.shading = 'RAMP'
         card_ob.data.materials.append(mat)
@@ -154,10 +158,15 @@ class CutShadows(unittest.TestCase):
         col = int(round((x + 2.0) * 16.0))
         return float(px[20:44, col - 3:col + 4, :3].mean())
 
-    def check(self, hashed, toon=False):
-        self.scene(hashed, toon)
+    def floor(self, hashed=False, toon=False, shadow='CUT'):
+        """The floor's brightness under the kept half's shadow, where the cut half's would fall,
+        and lit."""
+        self.scene(hashed, toon, shadow)
         px = np.asarray(helpers.render()["pixels"])
-        shadowed, under_cut, lit = self.floor_at(px, 0.5), self.floor_at(px, 1.5), self.floor_at(px, 3.0)
+        return self.floor_at(px, 0.5), self.floor_at(px, 1.5), self.floor_at(px, 3.0)
+
+    def check(self, hashed, toon=False):
+        shadowed, under_cut, lit = self.floor(hashed, toon)
         print(f"floor: under the kept half's shadow {shadowed:.4f}, where the cut half's would fall {under_cut:.4f}, "
               f"lit {lit:.4f}")
         self.assertGreater(lit, 0.1)
@@ -170,6 +179,15 @@ class CutShadows(unittest.TestCase):
     def test_hashed_card_and_a_toon_card(self):
         self.check(hashed=True)
         self.check(hashed=False, toon=True)
+
+    def test_the_materials_shadow_mode(self):
+        """Shadows not cut (3.4's Shadow Mode Opaque, 4.2+'s Transparent Shadows off): the whole
+        card casts, its cut half too; 3.4's Shadow Mode None: nothing."""
+        shadowed, under_cut, lit = self.floor(shadow='OPAQUE')
+        self.assertLess(under_cut, 0.05 * lit, "the cut half casts")
+        if "surface_render_method" not in bpy.types.Material.bl_rna.properties:  # 3.4
+            shadowed, under_cut, lit = self.floor(shadow='NONE')
+            self.assertAlmostEqual(shadowed / lit, 1.0, delta=0.01, msg="no shadow at all")
 
 
 if __name__ == "__main__":
