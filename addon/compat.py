@@ -98,13 +98,15 @@ def alpha_blend(material):
 
 
 def shadow_mode(material):
-    """How a material casts shadows in EEVEE: 'OPAQUE' (its whole surface), 'CUT' (as its alpha
-    cuts it) or 'NONE'. 3.4: its Shadow Mode (Clip and Hashed cut); 4.2+ (EEVEE Next): its
-    Transparent Shadows (on by default)."""
+    """How a material casts shadows in EEVEE: ('OPAQUE' | 'CUT' | 'NONE', how a cut cuts: 'CLIP'
+    or 'HASHED'). 3.4: its Shadow Mode (Clip, Hashed; None casts nothing), whatever its Blend
+    Mode; 4.2+ (EEVEE Next): Transparent Shadows (on by default), hashed as its surface."""
     if hasattr(material, "surface_render_method"):
-        return 'CUT' if getattr(material, "use_transparent_shadow", True) else 'OPAQUE'
+        return ('CUT' if getattr(material, "use_transparent_shadow", True) else 'OPAQUE'), 'HASHED'
     method = getattr(material, "shadow_method", 'OPAQUE')
-    return {'NONE': 'NONE', 'CLIP': 'CUT', 'HASHED': 'CUT'}.get(method, 'OPAQUE')
+    if method in {'CLIP', 'HASHED'}:
+        return 'CUT', method
+    return ('NONE' if method == 'NONE' else 'OPAQUE'), 'CLIP'
 
 
 def write_pass(render_pass, pixels):

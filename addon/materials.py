@@ -70,6 +70,7 @@ class BaseTexture:
     shininess: float = -1.0  # the material's own Blinn exponent (Custom Shininess); -1: from roughness
     alpha: int = 0         # EL_ALPHA (surface_modes.json): how its alpha, fed into Alpha too, cuts
     alpha_threshold: float = 0.5  # EL_ALPHA_CLIP's
+    shadow_alpha: int = 0  # EL_ALPHA of its shadow (compat.shadow_mode: a cut shadow), by the same alpha
 
 
 def default_ramp(base):
@@ -183,18 +184,22 @@ def shading_of(material):
         # Toon shading draws no node program (passes/texture_variants.texture_key; an image's alpha still
         # cuts): said, as what is not drawn is.
         what = (f"its image '{image.image.name}' is drawn as its mean colour" if image is not None
-                else "its colour attribute is drawn as white")
+                else "its colour attribute is drawn as white" if program.attribute is not None
+                else "its Normal Map is not drawn")
         note = "; ".join(n for n in (note, f"material '{material.name}': {what} under toon shading") if n)
     note = "; ".join(n for n in (material_inputs.note(material, unread(material)), note) if n)
     # K is capped at K_MAX; a value stored past it (a linked file of an older layout, which
     # versioning leaves to its library, or a raw ID property) draws as the cap.
     alpha_mode, threshold, alpha_note = _alpha_mode(material, node, image)
     note = "; ".join(n for n in (note, alpha_note) if n)
-    texture = (BaseTexture(image, program, f0, float(n) if s.use_custom_shininess else -1.0, alpha_mode, threshold)
-               if program is not None and program.outputs else None)
+    shadow, shadow_cut = compat.shadow_mode(material)
+    shadow_alpha = (ALPHA[shadow_cut] if shadow == 'CUT' and node is not None and material_inputs.image_alpha(node, image)
+                    else ALPHA["NONE"])
+    texture = (BaseTexture(image, program, f0, float(n) if s.use_custom_shininess else -1.0, alpha_mode, threshold,
+                           shadow_alpha) if program is not None and program.outputs else None)
     return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full,
-                   int(material.pass_index), texture, emission, compat.shadow_mode(material))
+                   int(material.pass_index), texture, emission, shadow)
 
 
 def _alpha_mode(material, node, image):

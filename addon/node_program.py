@@ -399,13 +399,10 @@ class _Compiler:
             raise Unsupported(f"{_describe(node)} is muted")
         if node.space != 'TANGENT':
             raise Unsupported(f"{_describe(node)}: its {node.space.title().replace('_', ' ')} space")
-        uv = node.uv_map
-        if self.images and uv != self.images[0].uv_map and (uv or self.images[0].uv_map):
-            raise Unsupported(f"{_describe(node)}: another UV map than its image's ('{self.images[0].image.name}')")
         color, strength = self.input(node.inputs["Color"]), self.input(node.inputs["Strength"])
         if color[0] == 'const' and tuple(color[1][:3]) == FLAT_NORMAL:
             return None
-        self.normal_uv = uv
+        self.normal_uv = node.uv_map  # its tangents' own, whatever its image's (scene_sync.tangent_corners)
         return self.emit(OP["NORMAL_MAP"], a=color, b=strength)
 
     def _attribute(self, node, out):

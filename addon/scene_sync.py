@@ -420,27 +420,28 @@ def tangent_corners(name, mesh, shading, tri_loops, corner_pos, corner_nor):
     node program has a Normal Map: Blender's own (mikktspace, Mesh.calc_tangents, as EEVEE's),
     or on a mesh with n-gons, which it refuses, each triangle's from its UVs. A mesh without
     the UV map keeps its normals there, and the slot's note says so."""
+    loops = tri_loops.reshape(-1)
+    wanted = {s.texture.program.normal_uv for s in shading if s.texture is not None} - {None}
+    layers = {uv: (mesh.uv_layers.get(uv) if uv else render_uv_layer(mesh)) for uv in wanted}
+    # Every UV read before calc_tangents: on 5.0 a refused call leaves the layers' data unreadable.
+    uvs = {uv: _foreach(layer.data, "uv", np.float32, 2)[loops] for uv, layer in layers.items() if layer is not None}
     out_tangent, out = {}, []
+    for uv_name, layer in layers.items():
+        if layer is None:
+            continue
+        try:
+            mesh.calc_tangents(uvmap=layer.name)
+            tangent = _foreach(mesh.loops, "tangent", np.float32, 3)[loops]
+            sign = _foreach(mesh.loops, "bitangent_sign", np.float32)[loops]
+        except RuntimeError:  # n-gons
+            tangent, sign = triangle_tangents(corner_pos, uvs[uv_name], corner_nor)
+        out_tangent[uv_name] = np.ascontiguousarray(np.concatenate([tangent, sign[:, None]], axis=1), np.float32)
     for s in shading:
         uv_name = s.texture.program.normal_uv if s.texture is not None else None
-        if uv_name is not None and uv_name not in out_tangent:
-            layer = mesh.uv_layers.get(uv_name) if uv_name else render_uv_layer(mesh)
-            if layer is None:
-                which = f"UV map '{uv_name}'" if uv_name else "UV map"
-                note = f"{name}: material '{s.material}' has a Normal Map on a {which} the mesh does not have; not drawn"
-                s = dataclasses.replace(s, note="; ".join(n for n in (s.note, note) if n))
-                out.append(s)
-                continue
-            loops = tri_loops.reshape(-1)
-            # Read before calc_tangents: on 5.0 a refused call leaves the layer's data unreadable.
-            uv = _foreach(layer.data, "uv", np.float32, 2)[loops]
-            try:
-                mesh.calc_tangents(uvmap=layer.name)
-                tangent = _foreach(mesh.loops, "tangent", np.float32, 3)[loops]
-                sign = _foreach(mesh.loops, "bitangent_sign", np.float32)[loops]
-            except RuntimeError:  # n-gons
-                tangent, sign = triangle_tangents(corner_pos, uv, corner_nor)
-            out_tangent[uv_name] = np.ascontiguousarray(np.concatenate([tangent, sign[:, None]], axis=1), np.float32)
+        if uv_name is not None and layers.get(uv_name) is None:
+            which = f"UV map '{uv_name}'" if uv_name else "UV map"
+            note = f"{name}: material '{s.material}' has a Normal Map on a {which} the mesh does not have; not drawn"
+            s = dataclasses.replace(s, note="; ".join(n for n in (s.note, note) if n))
         out.append(s)
     return out, out_tangent
 

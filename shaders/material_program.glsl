@@ -5,6 +5,7 @@
  * constants, from it the results of earlier instructions. */
 #ifdef EL_BASE_TEXTURE
 vec4 el_mat_reg[EL_MAT_CODE];
+vec4 el_mat_texels[EL_MAT_IMAGES]; /* each image's texel at the point, sampled once (el_material_at) */
 
 vec4 el_mat_operand(float ref)
 {
@@ -152,11 +153,11 @@ vec4 el_mat_ramp(float fac, bool linear, int count, int first, int pos)
   return el_mat_operand(float(first + count - 1));
 }
 
-vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 texels[EL_MAT_IMAGES], vec4 col)
+vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 col)
 {
   switch (op) {
     case EL_OP_IMAGE: {
-      vec4 texel = texels[clamp(sub / 2, 0, EL_MAT_IMAGES - 1)];
+      vec4 texel = el_mat_texels[clamp(sub / 2, 0, EL_MAT_IMAGES - 1)];
       return (sub & 1) == 1 ? el_mat_float(texel.a) : texel;
     }
     case EL_OP_ATTRIBUTE: {
@@ -199,16 +200,15 @@ struct ElMaterial {
 
 ElMaterial el_material_at(vec2 uv, vec4 col)
 {
-  vec4 texels[EL_MAT_IMAGES];
   int images = int(material.program.w + 0.5);
   for (int k = 0; k < EL_MAT_IMAGES; k++) {
-    texels[k] = k < images ? el_mat_texel(k, uv) : vec4(0.0); /* each image sampled once */
+    el_mat_texels[k] = k < images ? el_mat_texel(k, uv) : vec4(0.0);
   }
   int count = min(int(material.program.x + 0.5), EL_MAT_CODE);
   for (int i = 0; i < count; i++) {
     vec4 c = material.code[i], p = material.args[i];
     el_mat_reg[i] = el_mat_op(int(c.x + 0.5), int(p.x + 0.5), p.yzw, el_mat_operand(c.y), el_mat_operand(c.z),
-                              el_mat_operand(c.w), texels, col);
+                              el_mat_operand(c.w), col);
   }
   vec3 base = max(el_mat_operand(material.outputs.x).rgb, 0.0); /* no negative albedo, as Cycles' Principled */
   float metallic = clamp(el_mat_operand(material.outputs.y).x, 0.0, 1.0);

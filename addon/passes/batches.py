@@ -47,16 +47,15 @@ def slot_uv(extract, slot, corners):
 
 def slot_tangents(extract, slot, corners, flipped):
     """The tangents its Normal Map follows at a slot's corners (MeshExtract.corner_tangent), zero
-    without one. A triangle wound the other way round has its normals negated (surface_buffers):
-    its bitangent sign is too, which keeps the bitangent, sign x N x T, as it was."""
+    without one. A triangle wound the other way round has its normals negated (surface_buffers),
+    so it is seen from the other side: its tangent and sign are negated too, as EEVEE negates
+    them for a face seen from behind, which gives back Blender's frame (el_normal_map)."""
     texture = extract.slot_shading[slot].texture
     uv = texture.program.normal_uv if texture is not None else None
     tan = extract.corner_tangent.get(uv) if uv is not None else None
     if tan is None:
         return np.zeros((len(corners), 4), np.float32)
-    out = tan[corners].copy()
-    out[:, 3] *= np.where(np.repeat(flipped, 3), -1.0, 1.0)
-    return out
+    return tan[corners] * np.where(np.repeat(flipped, 3), -1.0, 1.0).astype(np.float32)[:, None]
 
 
 def slot_colors(extract, slot, corners):

@@ -54,9 +54,12 @@ def _merged_batch(corners):
 
 def cut_key(s):
     """The texture key (texture_variants.texture_key) of a slot that casts only where its image's
-    alpha keeps its surface (its material's shadow mode 'CUT': compat.shadow_mode), or None."""
-    cuts = s.shadow == 'CUT' and s.texture is not None and s.texture.alpha and s.texture.source is not None
-    return texture_key(s, SURFACE_MODES["PHONG"]) if cuts else None
+    alpha keeps it (its material's shadow mode 'CUT': compat.shadow_mode), cut by its shadow's
+    own alpha mode (materials.BaseTexture.shadow_alpha), or None."""
+    t = s.texture
+    if s.shadow != 'CUT' or t is None or not t.shadow_alpha or t.source is None:
+        return None
+    return texture_key(s, SURFACE_MODES["PHONG"], alpha=False) + (int(t.shadow_alpha),)
 
 
 def draw(plan, scene, gpu_meshes, maps):

@@ -282,7 +282,8 @@ def merged_casters(scene):
         count = len(inst.mesh.corner_pos) // 3
         if not getattr(inst, "casts_shadow", True) or count > MERGE_TRIANGLES or total + count > MERGED_MAX:
             continue
-        if any(s.shadow != 'OPAQUE' for s in inst.mesh.slot_shading):
+        if any(s.shadow == 'NONE' or (s.shadow == 'CUT' and s.texture is not None and s.texture.shadow_alpha)
+               for s in inst.mesh.slot_shading):
             continue  # cast by its own slots' batches: cut by their images' alpha, or not at all (shadow_pass)
         m = np.asarray(inst.matrix, np.float64)
         parts.append((np.asarray(inst.mesh.corner_pos, np.float64) @ m[:3, :3].T + m[:3, 3]).astype(np.float32))

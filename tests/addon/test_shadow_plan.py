@@ -19,12 +19,18 @@ camera_mod = addon_module("passes.camera")
 class Mesh:
     box: np.ndarray
     corner_pos: np.ndarray = field(default_factory=lambda: np.zeros((36, 3), np.float32))
-    slot_shading: tuple = ()  # materials.Shading per slot: only its shadow mode is read here
+    slot_shading: tuple = ()  # materials.Shading per slot: only its shadow mode and cut are read here
+
+
+@dataclass
+class Texture:
+    shadow_alpha: int  # EL_ALPHA of its shadow: 0, the whole face casts
 
 
 @dataclass
 class Shading:
     shadow: str = 'OPAQUE'  # compat.shadow_mode
+    texture: object = None
 
 
 @dataclass
@@ -193,11 +199,11 @@ class MergedCasters(unittest.TestCase):
         hidden = box_at((5.0, 0.0, 0.0))
         hidden.casts_shadow = False
         cut = box_at((-5.0, 0.0, 0.0))  # an image's alpha cuts a slot: its own draws cut it (shadow_pass.cut_key)
-        cut.mesh.slot_shading = (Shading(), Shading('CUT'))
+        cut.mesh.slot_shading = (Shading(), Shading('CUT', Texture(shadow_alpha=1)))
         none = box_at((-7.0, 0.0, 0.0))  # a slot whose material casts none
         none.mesh.slot_shading = (Shading('NONE'),)
-        plain = box_at((-6.0, 0.0, 0.0))
-        plain.mesh.slot_shading = (Shading(),)
+        plain = box_at((-6.0, 0.0, 0.0))  # shadows that would cut, but no image's alpha: the whole face
+        plain.mesh.slot_shading = (Shading('CUT'), Shading('CUT', Texture(shadow_alpha=0)))
         picked, corners = plan_mod.merged_casters(Scene([large, small, hidden, cut, plain, none], []))
         self.assertEqual(picked, [1, 4])
         corners = corners[:len(small.mesh.corner_pos)]

@@ -548,6 +548,32 @@ class NormalMaps(unittest.TestCase):
         got = np.asarray(rec["pixels"])[16, 64, :3]
         np.testing.assert_allclose(got, self.expected()[1], rtol=2e-3)
 
+    def test_faces_seen_from_behind_as_cycles_draws_them(self):
+        """The quad with its normal flipped (seen from behind: the frame turned round, as EEVEE
+        turns it), and a closed box turned inside out, whose top the library winds back
+        (batches.slot_tangents negates its tangent with its normal): each texel as Cycles
+        draws it."""
+        scene = self.scene()
+        quad = next(o for o in scene.objects if o.type == 'MESH')
+        quad.data.flip_normals()
+        ours = self.texels(np.asarray(helpers.render()["pixels"]))
+        theirs = self.texels(cycles_pixels(scene, samples=4))
+        print(f"seen from behind: drawn {ours[:, 0]}, Cycles {theirs[:, 0]}")
+        np.testing.assert_allclose(ours, theirs, rtol=1e-2, atol=2e-3)
+        mat = quad.data.materials[0]
+        bpy.data.objects.remove(quad)
+        bpy.ops.mesh.primitive_cube_add(size=2.0, location=(0.0, 0.0, -1.0))  # its top at z = 0, filling the frame
+        box = bpy.context.object
+        box.data.flip_normals()
+        uv = box.data.uv_layers.active
+        # Every face's UVs as the quad's: u along its first edge, v along its second.
+        uv.data.foreach_set("uv", np.tile([0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0], 6).astype(np.float32))
+        box.data.materials.append(mat)
+        ours = self.texels(np.asarray(helpers.render()["pixels"]))
+        theirs = self.texels(cycles_pixels(scene, samples=4))
+        print(f"inside-out box: drawn {ours[:, 0]}, Cycles {theirs[:, 0]}")
+        np.testing.assert_allclose(ours, theirs, rtol=1e-2, atol=2e-3)
+
     def test_strength_and_a_mirrored_object(self):
         """Strength 0.5 mixes the mapped normal halfway back to the mesh's (then normalised); a
         mirrored object (scale x -1) maps its u along -x: the tangent turns with it."""
