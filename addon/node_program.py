@@ -1,12 +1,12 @@
 """Node chains into a Principled BSDF's inputs (docs/addon.md, "Node chains"): RGB, Value, Mix
-(and 3.4's Mix RGB), Math, ColorRamp, Invert, Separate and Combine (RGB, Color, XYZ), Clamp, up
-to four images (Image Texture) on one UV map and one colour attribute (Color Attribute, or an
-Attribute node naming one), with Blender's implicit conversions between colours, vectors and
-floats. The one
-description of the ops is shaders/material_data.json (EL_OP, EL_MIX, EL_MATH); `apply` here and
-material_program.glsl implement it the same way, which a test pins (test_node_program). A chain
-without an image or the attribute is folded here into its value; one with either becomes the
-node program the surface, band and corner programs run per pixel (EL_BASE_TEXTURE).
+(and 3.4's Mix RGB), Math, Map Range, ColorRamp, Invert, Gamma, Separate and Combine (RGB,
+Color, XYZ), Clamp, up to four images (Image Texture) on one UV map, one colour attribute
+(Color Attribute, or an Attribute node naming one) and a Normal Map, with Blender's implicit
+conversions between colours, vectors and floats. The one description of the ops is
+shaders/material_data.json (EL_OP, EL_MIX, EL_MATH); `apply` here and material_program.glsl
+implement it the same way, which a test pins (test_node_program). A chain without an image or
+the attribute is folded here into its value; one with either becomes the node program the
+surface, band and corner programs run per pixel (EL_BASE_TEXTURE).
 """
 import math
 from dataclasses import dataclass, field
@@ -176,6 +176,8 @@ def apply(op, sub, settings, a, b, c, texels=(), ramp=None, color=(0.0, 0.0, 0.0
         return (a[0], b[0], c[0], 1.0)
     if op == OP["NORMAL_MAP"]:
         return (a[0], a[1], a[2], b[0])
+    if op == OP["GAMMA"]:
+        return (*((_pow(x, b[0]) if x > 0.0 else x) for x in a[:3]), a[3])
     if op == OP["GRAY"]:
         return _f(_gray(a, sub))
     if op == OP["CLAMP"]:
@@ -334,6 +336,10 @@ class _Compiler:
                 raise Unsupported(f"{_describe(node)}: its mode {node.mode}")
             i = node.inputs
             return self.emit(OP["COMBINE"], 0, a=self.input(i[0]), b=self.input(i[1]), c=self.input(i[2]))
+        if t == 'GAMMA':
+            return self.emit(OP["GAMMA"], a=self.input(node.inputs["Color"]), b=self.input(node.inputs["Gamma"]))
+        if t == 'MAP_RANGE':
+            return self._map_range(node)
         if t == 'CLAMP':
             return self.emit(OP["CLAMP"], 0 if node.clamp_type == 'MINMAX' else 1, a=self.input(node.inputs["Value"]),
                              b=self.input(node.inputs["Min"]), c=self.input(node.inputs["Max"]))
@@ -357,6 +363,24 @@ class _Compiler:
         return self.emit(OP["MIX"], MIX[blend], (float(node.clamp_factor), clamp_result, 0.0),
                          self.input(_socket(node, "A_" + suffix)), self.input(_socket(node, "B_" + suffix)),
                          self.input(_socket(node, "Factor_Float")))
+
+    def _map_range(self, node):
+        """A Map Range (float, linear), as EEVEE's map_range_linear, in Math instructions:
+        to_min + (value - from_min) / (from_max - from_min) x (to_max - to_min), clamped between
+        the two `to` values when it clamps."""
+        if node.data_type != 'FLOAT' or node.interpolation_type != 'LINEAR':
+            kind = node.interpolation_type if node.data_type == 'FLOAT' else node.data_type
+            raise Unsupported(f"{_describe(node)}: its {kind.title().replace('_', ' ')} mapping")
+
+        def socket(name):
+            return self.input(next(s for s in node.inputs if s.name == name and s.enabled))
+        value, from_min, from_max = socket("Value"), socket("From Min"), socket("From Max")
+        to_min, to_max = socket("To Min"), socket("To Max")
+        span = self.emit(OP["MATH"], MATH["SUBTRACT"], a=from_max, b=from_min)
+        t = self.emit(OP["MATH"], MATH["DIVIDE"], a=self.emit(OP["MATH"], MATH["SUBTRACT"], a=value, b=from_min), b=span)
+        out = self.emit(OP["MATH"], MATH["MULTIPLY_ADD"], a=t, b=self.emit(OP["MATH"], MATH["SUBTRACT"], a=to_max, b=to_min),
+                        c=to_min)
+        return self.emit(OP["CLAMP"], 1, a=out, b=to_min, c=to_max) if node.clamp else out
 
     def _ramp(self, node, out):
         """A ColorRamp's Color; its Alpha the Color's alpha (one RAMP instruction for both)."""

@@ -180,6 +180,15 @@ vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 col)
     case EL_OP_SEPARATE: return el_mat_float(a[clamp(sub, 0, 3)]);
     case EL_OP_COMBINE: return vec4(a.x, b.x, c.x, 1.0);
     case EL_OP_NORMAL_MAP: return vec4(a.rgb, b.x);
+    case EL_OP_GAMMA: {
+      vec4 g = a; /* EEVEE's node_gamma: channels above zero only */
+      for (int k = 0; k < 3; k++) {
+        if (a[k] > 0.0) {
+          g[k] = el_mat_pow(a[k], b.x);
+        }
+      }
+      return g;
+    }
     case EL_OP_GRAY: return el_mat_float(sub == 0 ? dot(a.rgb, vec3(0.2126, 0.7152, 0.0722)) : (a.r + a.g + a.b) / 3.0);
     case EL_OP_CLAMP: {
       float lo = sub == 0 ? b.x : min(b.x, c.x), hi = sub == 0 ? c.x : max(b.x, c.x);

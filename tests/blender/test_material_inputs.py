@@ -62,20 +62,20 @@ class MaterialInputs(unittest.TestCase):
         self.assertEqual(warnings(helpers.render(), "does not draw"), [])
         self.assertEqual(helpers.addon().materials.unread_inputs(node), [])
         # Through a node EdgeLight does not evaluate, the image is not drawn, and that is said.
-        gamma = tree.nodes.new("ShaderNodeGamma")
-        tree.links.new(tex.outputs["Color"], gamma.inputs["Color"])
-        tree.links.new(gamma.outputs["Color"], node.inputs["Base Color"])
+        curves = tree.nodes.new("ShaderNodeRGBCurve")
+        tree.links.new(tex.outputs["Color"], curves.inputs["Color"])
+        tree.links.new(curves.outputs["Color"], node.inputs["Base Color"])
         # So is an image into the emission's strength: no emission is drawn then.
         mask = tree.nodes.new("ShaderNodeTexImage")
         mask.label = "Mask"
         tree.links.new(mask.outputs["Alpha"], node.inputs["Emission Strength"])
         lines = warnings(helpers.render(), "material 'Painted': EdgeLight does not draw")
         self.assertEqual(len(lines), 1, lines)
-        self.assertIn("Base Color from Gamma", lines[0])
+        self.assertIn("Base Color from RGB Curves", lines[0])
         self.assertIn("its value (0.5, 0.4, 0.3) is drawn", lines[0])
         self.assertIn("Emission Strength from Image Texture 'Mask': no image (no emission is drawn)", lines[0])
         unread = helpers.addon().materials.unread_inputs(node)
-        self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Base Color: Gamma, Emission Strength: Image Texture")
+        self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Base Color: RGB Curves, Emission Strength: Image Texture")
 
     def test_other_surface_shader_is_named_and_the_render_goes_on(self):
         scene()

@@ -111,6 +111,23 @@ def _two_images(tree, tex):
     return m.outputs["Color"]
 
 
+def _map_range(tree, tex, clamp=True):
+    """The image's luminance mapped from [0.2, 0.7] to [0.9, 0.1] (reversed), clamped or not."""
+    m = tree.nodes.new('ShaderNodeMapRange')
+    m.clamp = clamp
+    m.inputs["From Min"].default_value, m.inputs["From Max"].default_value = 0.2, 0.7
+    m.inputs["To Min"].default_value, m.inputs["To Max"].default_value = 0.9, 0.1
+    tree.links.new(tex.outputs["Color"], m.inputs["Value"])
+    return m.outputs[0]
+
+
+def _gamma(tree, tex):
+    g = tree.nodes.new('ShaderNodeGamma')
+    g.inputs["Gamma"].default_value = 2.2
+    tree.links.new(tex.outputs["Color"], g.inputs["Color"])
+    return g.outputs["Color"]
+
+
 def _folded(tree, tex):
     """No image: an RGB times a Value's square (Mix Multiply), folded on the CPU."""
     n, link = tree.nodes, tree.links.new
@@ -138,7 +155,9 @@ CHAINS = ([(f"mix {b}", lambda t, x, b=b: _mix(t, x, b)) for b in MIX_BLENDS]
           + [(f"math {op}", lambda t, x, op=op: _math(t, x, op)) for op in MATH_OPS]
           + [("math POWER clamped", lambda t, x: _math(t, x, 'POWER', clamp=True)),
              ("ramp LINEAR", lambda t, x: _ramp(t, x, 'LINEAR')), ("ramp CONSTANT", lambda t, x: _ramp(t, x, 'CONSTANT')),
-             ("separate, invert, clamp, combine", _misc), ("two images", _two_images), ("folded", _folded)])
+             ("separate, invert, clamp, combine", _misc), ("two images", _two_images),
+             ("map range clamped", _map_range), ("map range", lambda t, x: _map_range(t, x, clamp=False)),
+             ("gamma", _gamma), ("folded", _folded)])
 
 
 # The colour attribute's value on each of a strip's four faces (a corner attribute, one colour
@@ -294,13 +313,13 @@ class NodeChains(unittest.TestCase):
         uv.uv_map = "Second"
         tree.links.new(uv.outputs["UV"], other.inputs["Vector"])
         tree.links.new(other.outputs["Color"], bsdf.inputs["Roughness"])
-        gamma = tree.nodes.new('ShaderNodeGamma')
-        tree.links.new(gamma.outputs[0], bsdf.inputs["Metallic"])
+        unknown = tree.nodes.new('ShaderNodeRGBCurve')
+        tree.links.new(unknown.outputs[0], bsdf.inputs["Metallic"])
         lines = [m for level, m in helpers.render().get("messages", []) if level == 'WARNING']
         self.assertEqual(len(lines), 1, lines)
         self.assertIn("Roughness from Image Texture 'Image Texture.001': another UV map than its first image's "
                       "('Texels')", lines[0])
-        self.assertIn("Metallic from Gamma (its value", lines[0])
+        self.assertIn("Metallic from RGB Curves (its value", lines[0])
 
 
 def _color_attribute(tree, tex):

@@ -158,11 +158,11 @@ class SaidWhenNotDrawn(unittest.TestCase):
         helpers.needs_gpu()
 
     def test_a_node_between_is_still_reported(self):
-        quad_scene(between='ShaderNodeGamma')
+        quad_scene(between='ShaderNodeRGBCurve')
         rec = helpers.render()
         said = [m for _, m in rec.get("messages", []) if "'Textured'" in m]
         print(said)
-        self.assertTrue(any("Base Color from Gamma" in m for m in said), said)
+        self.assertTrue(any("Base Color from RGB Curves" in m for m in said), said)
 
     def test_under_toon_shading_the_image_is_its_mean_and_that_is_said(self):
         scene, ob, mat = quad_scene()
