@@ -1,8 +1,8 @@
-"""Node chains into a Principled BSDF's inputs (docs/addon.md, "Node chains"): RGB, Value, Mix
-(and 3.4's Mix RGB), Math, Map Range, ColorRamp, Invert, Gamma, Separate and Combine (RGB,
-Color, XYZ), Clamp, up to four images (Image Texture) on one UV map, one colour attribute
-(Color Attribute, or an Attribute node naming one) and a Normal Map, with Blender's implicit
-conversions between colours, vectors and floats. The one description of the ops is
+"""Node chains into a Principled BSDF's inputs (docs/addon.md, "Node chains"): RGB, Value, Mix (and
+3.4's Mix RGB), Math, Map Range, ColorRamp, Invert, Gamma, Hue/Saturation/Value, Separate and
+Combine (RGB, Color, XYZ), Clamp, up to four images (Image Texture) on one UV map, one colour
+attribute (Color Attribute, or an Attribute node naming one) and a Normal Map, with Blender's
+implicit conversions between colours, vectors and floats. The one description of the ops is
 shaders/material_data.json (EL_OP, EL_MIX, EL_MATH); `apply` here and material_program.glsl
 implement it the same way, which a test pins (test_node_program). A chain without an image or
 the attribute is folded here into its value; one with either becomes the node program the
@@ -126,6 +126,30 @@ def _blend(blend, a, b, t):
     return (*out, a[3])
 
 
+def _rgb_to_hsv(r, g, b):
+    """EEVEE's rgb_to_hsv."""
+    cmax, cmin = max(r, g, b), min(r, g, b)
+    delta = cmax - cmin
+    s = delta / cmax if cmax != 0.0 else 0.0
+    h = 0.0
+    if s != 0.0:
+        cr, cg, cb = ((cmax - x) / delta for x in (r, g, b))
+        h = (cb - cg if r == cmax else (2.0 + cr - cb if g == cmax else 4.0 + cg - cr)) / 6.0
+        h += 1.0 if h < 0.0 else 0.0
+    return h, s, cmax
+
+
+def _hsv_to_rgb(h, s, v):
+    """EEVEE's hsv_to_rgb."""
+    if s == 0.0:
+        return v, v, v
+    h = (0.0 if h == 1.0 else h) * 6.0
+    i = math.floor(h)
+    f = h - i
+    p, q, t = v * (1.0 - s), v * (1.0 - s * f), v * (1.0 - s * (1.0 - f))
+    return ((v, t, p), (q, v, p), (p, v, t), (p, q, v), (t, p, v), (v, p, q))[min(max(int(i), 0), 5)]
+
+
 def _ramp(fac, linear, positions, colours):
     """A ColorRamp (RGB) at `fac`: the first stop's colour before it, the last's after; between,
     the left stop's (constant) or the two blended (linear)."""
@@ -176,6 +200,10 @@ def apply(op, sub, settings, a, b, c, texels=(), ramp=None, color=(0.0, 0.0, 0.0
         return (a[0], b[0], c[0], 1.0)
     if op == OP["NORMAL_MAP"]:
         return (a[0], a[1], a[2], b[0])
+    if op == OP["HUE_SAT"]:
+        h, s, v = _rgb_to_hsv(*a[:3])
+        turned = _hsv_to_rgb((h + b[0] + 0.5) % 1.0, min(max(s * b[1], 0.0), 1.0), v * b[2])
+        return (*(x + c[0] * (y - x) for x, y in zip(a[:3], turned)), a[3])
     if op == OP["GAMMA"]:
         return (*((_pow(x, b[0]) if x > 0.0 else x) for x in a[:3]), a[3])
     if op == OP["GRAY"]:
@@ -336,6 +364,10 @@ class _Compiler:
                 raise Unsupported(f"{_describe(node)}: its mode {node.mode}")
             i = node.inputs
             return self.emit(OP["COMBINE"], 0, a=self.input(i[0]), b=self.input(i[1]), c=self.input(i[2]))
+        if t == 'HUE_SAT':
+            i = node.inputs
+            hsv = self.emit(OP["COMBINE"], a=self.input(i["Hue"]), b=self.input(i["Saturation"]), c=self.input(i["Value"]))
+            return self.emit(OP["HUE_SAT"], a=self.input(i["Color"]), b=hsv, c=self.input(i["Fac"]))
         if t == 'GAMMA':
             return self.emit(OP["GAMMA"], a=self.input(node.inputs["Color"]), b=self.input(node.inputs["Gamma"]))
         if t == 'MAP_RANGE':

@@ -131,6 +131,46 @@ vec3 el_mat_blend(int blend, vec3 a, vec3 b, float t)
   return a + t * (b - a);
 }
 
+/* EEVEE's rgb_to_hsv and hsv_to_rgb (its colour utilities), for a Hue/Saturation/Value. */
+vec3 el_rgb_to_hsv(vec3 rgb)
+{
+  float cmax = max(rgb.r, max(rgb.g, rgb.b)), cmin = min(rgb.r, min(rgb.g, rgb.b));
+  float cdelta = cmax - cmin;
+  float s = cmax != 0.0 ? cdelta / cmax : 0.0;
+  float h = 0.0;
+  if (s != 0.0) {
+    vec3 c = (vec3(cmax) - rgb) / cdelta;
+    h = rgb.r == cmax ? c.b - c.g : (rgb.g == cmax ? 2.0 + c.r - c.b : 4.0 + c.g - c.r);
+    h /= 6.0;
+    h += h < 0.0 ? 1.0 : 0.0;
+  }
+  return vec3(h, s, cmax);
+}
+
+vec3 el_hsv_to_rgb(vec3 hsv)
+{
+  float h = hsv.x, s = hsv.y, v = hsv.z;
+  if (s == 0.0) {
+    return vec3(v);
+  }
+  h = (h == 1.0 ? 0.0 : h) * 6.0;
+  float i = floor(h), f = h - i;
+  float p = v * (1.0 - s), q = v * (1.0 - s * f), t = v * (1.0 - s * (1.0 - f));
+  if (i == 0.0) {
+    return vec3(v, t, p);
+  }
+  if (i == 1.0) {
+    return vec3(q, v, p);
+  }
+  if (i == 2.0) {
+    return vec3(p, v, t);
+  }
+  if (i == 3.0) {
+    return vec3(p, q, v);
+  }
+  return i == 4.0 ? vec3(t, p, v) : vec3(v, p, q);
+}
+
 /* A ColorRamp: `count` stops, their colours from operand `first`, positions four to a constant
  * from operand `pos`. */
 vec4 el_mat_ramp(float fac, bool linear, int count, int first, int pos)
@@ -180,6 +220,11 @@ vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 col)
     case EL_OP_SEPARATE: return el_mat_float(a[clamp(sub, 0, 3)]);
     case EL_OP_COMBINE: return vec4(a.x, b.x, c.x, 1.0);
     case EL_OP_NORMAL_MAP: return vec4(a.rgb, b.x);
+    case EL_OP_HUE_SAT: {
+      vec3 hsv = el_rgb_to_hsv(a.rgb);
+      hsv = vec3(fract(hsv.x + b.x + 0.5), clamp(hsv.y * b.y, 0.0, 1.0), hsv.z * b.z);
+      return vec4(mix(a.rgb, el_hsv_to_rgb(hsv), c.x), a.a);
+    }
     case EL_OP_GAMMA: {
       vec4 g = a; /* EEVEE's node_gamma: channels above zero only */
       for (int k = 0; k < 3; k++) {

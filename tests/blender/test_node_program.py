@@ -128,6 +128,15 @@ def _gamma(tree, tex):
     return g.outputs["Color"]
 
 
+def _hue_sat(tree, tex):
+    """The image's hue turned by a tenth, its saturation x 1.5, its value x 0.8, mixed in at 0.9."""
+    h = tree.nodes.new('ShaderNodeHueSaturation')
+    h.inputs["Hue"].default_value, h.inputs["Saturation"].default_value = 0.6, 1.5
+    h.inputs["Value"].default_value, h.inputs["Fac"].default_value = 0.8, 0.9
+    tree.links.new(tex.outputs["Color"], h.inputs["Color"])
+    return h.outputs["Color"]
+
+
 def _folded(tree, tex):
     """No image: an RGB times a Value's square (Mix Multiply), folded on the CPU."""
     n, link = tree.nodes, tree.links.new
@@ -157,7 +166,7 @@ CHAINS = ([(f"mix {b}", lambda t, x, b=b: _mix(t, x, b)) for b in MIX_BLENDS]
              ("ramp LINEAR", lambda t, x: _ramp(t, x, 'LINEAR')), ("ramp CONSTANT", lambda t, x: _ramp(t, x, 'CONSTANT')),
              ("separate, invert, clamp, combine", _misc), ("two images", _two_images),
              ("map range clamped", _map_range), ("map range", lambda t, x: _map_range(t, x, clamp=False)),
-             ("gamma", _gamma), ("folded", _folded)])
+             ("gamma", _gamma), ("hue saturation value", _hue_sat), ("folded", _folded)])
 
 
 # The colour attribute's value on each of a strip's four faces (a corner attribute, one colour
