@@ -30,12 +30,7 @@ LOBES = (("Subsurface", ("Subsurface", "Subsurface Weight")),
 
 def _from_node(socket):
     """The node feeding a linked socket, through reroutes; None when unlinked."""
-    while socket is not None and socket.is_linked:
-        node = socket.links[0].from_node
-        if node.type != 'REROUTE':
-            return node
-        socket = node.inputs[0]
-    return None
+    return feeding(socket)[0]
 
 
 @dataclass(frozen=True)
@@ -84,10 +79,13 @@ def image_node_problem(node):
     return ""
 
 
-def _feeding(socket):
-    """(the node, its output socket) feeding a linked socket, through reroutes; (None, None)."""
+def feeding(socket):
+    """(the node, its output socket) feeding a linked socket, through reroutes; (None, None)
+    when unlinked, or linked through a muted or invalid link (which feeds nothing)."""
     while socket is not None and socket.is_linked:
         link = socket.links[0]
+        if not link.is_valid or getattr(link, "is_muted", False):
+            return None, None
         if link.from_node.type != 'REROUTE':
             return link.from_node, link.from_socket
         socket = link.from_node.inputs[0]
@@ -101,7 +99,7 @@ def image_alpha(node, image):
     alpha = node.inputs.get("Alpha")
     if alpha is None or image is None:
         return False
-    source, out = _feeding(alpha)
+    source, out = feeding(alpha)
     return source is not None and source.type == 'TEX_IMAGE' and out.name == "Alpha" and image_node_input(source) == image
 
 
@@ -125,7 +123,8 @@ def image_unreadable(image):
     return w < 1 or h < 1
 
 
-def _describe(node):
+def describe(node):
+    """A node as a report names it: its kind, and its label or name where that differs."""
     label = node.label or node.name
     kind = node.bl_label
     return kind if label == kind else f"{kind} '{label}'"
@@ -183,13 +182,13 @@ def principled_of(material):
         for name in ("Volume", "Displacement"):
             node = _from_node(out.inputs.get(name)) if out.inputs.get(name) is not None else None
             if node is not None:
-                unread.append((f"{name.lower()} ({_describe(node)})", f"the {name} output: {_describe(node)}"))
+                unread.append((f"{name.lower()} ({describe(node)})", f"the {name} output: {describe(node)}"))
     if surface is not None and surface.type == 'BSDF_PRINCIPLED':
         return surface, unread
     first = next((n for n in tree.nodes if n.type == 'BSDF_PRINCIPLED'), None)
     if surface is not None:
         used = f"the Principled BSDF '{first.name}' in it is drawn" if first else "the viewport display colour is drawn"
-        unread.append((_describe(surface), f"its Surface is a {_describe(surface)} ({used})"))
+        unread.append((describe(surface), f"its Surface is a {describe(surface)} ({used})"))
     return first, unread
 
 
@@ -207,7 +206,7 @@ def unread_inputs(node, chains):
             continue  # drawn: the image's alpha cuts the surface (EL_TEX_ALPHA)
         if name not in failed:
             continue  # drawn: folded, or per pixel (node_program)
-        what = failed.get(name, _describe(source))
+        what = failed.get(name, describe(source))
         if name in EMISSION:
             out.append((f"{name}: {source.bl_label}", f"{name} from {what} (no emission is drawn)"))
         elif name in READ:

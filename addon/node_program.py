@@ -8,10 +8,12 @@ implement it the same way, which a test pins (test_node_program). A chain withou
 the attribute is folded here into its value; one with either becomes the node program the
 surface, band and corner programs run per pixel (EL_BASE_TEXTURE).
 """
+import functools
 import math
 from dataclasses import dataclass, field
 
 from . import material_inputs
+from .material_inputs import describe
 from .passes import shader_specs
 
 OP = shader_specs.enum("material_data.json", "EL_OP")
@@ -48,6 +50,16 @@ class Program:
     images: tuple = ()
     attribute: str = None
     normal_uv: str = None
+
+    @functools.cached_property
+    def packed(self):
+        """(code, args, consts, images) as the float runs of its MaterialData members
+        (passes/material_data.py), made once: a draw per instance and sample asks for them."""
+        return (tuple(float(v) for ins in self.code for v in ins[:4]),
+                tuple(float(v) for ins in self.code for v in ins[4:]),
+                tuple(float(v) for c in self.consts for v in c),
+                tuple(v for i in self.images
+                      for v in (float(i.closest), float(material_inputs.EXTENSIONS[i.extension]), 0.0, 0.0)))
 
     @property
     def image(self):
@@ -235,23 +247,6 @@ def run(program, texels, color=(0.0, 0.0, 0.0, 0.0)):
 
 # ---- reading the tree ----
 
-def _describe(node):
-    label = node.label or node.name
-    return node.bl_label if label == node.bl_label else f"{node.bl_label} '{label}'"
-
-
-def _feeding(socket):
-    """(node, output socket) a linked input reads, through reroutes; (None, None) unlinked."""
-    while socket.is_linked:
-        link = socket.links[0]
-        if not link.is_valid or getattr(link, "is_muted", False):
-            return None, None
-        if link.from_node.type != 'REROUTE':
-            return link.from_node, link.from_socket
-        socket = link.from_node.inputs[0]
-    return None, None
-
-
 def _socket(node, identifier):
     return next(s for s in node.inputs if s.identifier == identifier)
 
@@ -305,17 +300,9 @@ class _Compiler:
 
     def input(self, socket):
         """The value of an input socket: its link's, converted to its type, or its own."""
-        if not socket.is_linked:
+        node, out = material_inputs.feeding(socket)
+        if node is None:
             return ('const', _default(socket))
-        link = socket.links[0]
-        if not link.is_valid or getattr(link, "is_muted", False):
-            return ('const', _default(socket))
-        node, out = link.from_node, link.from_socket
-        while node.type == 'REROUTE':
-            if not node.inputs[0].is_linked:
-                return ('const', _default(socket))
-            link = node.inputs[0].links[0]
-            node, out = link.from_node, link.from_socket
         val = self.output(node, out)
         if socket.type == 'VALUE' and out.type in {'RGBA', 'VECTOR'}:
             val = self.emit(OP["GRAY"], 0 if out.type == 'RGBA' else 1, a=val)
@@ -325,7 +312,7 @@ class _Compiler:
         key = (node.as_pointer(), out.identifier)
         if key not in self.memo:
             if node.mute:
-                raise Unsupported(f"{_describe(node)} is muted")
+                raise Unsupported(f"{describe(node)} is muted")
             self.memo[key] = self._node(node, out)
         return self.memo[key]
 
@@ -346,7 +333,7 @@ class _Compiler:
             return self._mix(node)
         if t == 'MATH':
             if node.operation not in MATH:
-                raise Unsupported(f"{_describe(node)}: its operation {node.operation}")
+                raise Unsupported(f"{describe(node)}: its operation {node.operation}")
             i = node.inputs
             return self.emit(OP["MATH"], MATH[node.operation], (float(node.use_clamp), 0.0, 0.0),
                              self.input(i[0]), self.input(i[1]), self.input(i[2]) if len(i) > 2 else ('const', _f(0.0)))
@@ -356,12 +343,12 @@ class _Compiler:
             return self.emit(OP["INVERT"], 0, a=self.input(node.inputs["Color"]), b=self.input(node.inputs["Fac"]))
         if t in {'SEPRGB', 'SEPXYZ', 'SEPARATE_COLOR'}:
             if getattr(node, "mode", 'RGB') != 'RGB':
-                raise Unsupported(f"{_describe(node)}: its mode {node.mode}")
+                raise Unsupported(f"{describe(node)}: its mode {node.mode}")
             channel = [o.identifier for o in node.outputs].index(out.identifier)
             return self.emit(OP["SEPARATE"], channel, a=self.input(node.inputs[0]))
         if t in {'COMBRGB', 'COMBXYZ', 'COMBINE_COLOR'}:
             if getattr(node, "mode", 'RGB') != 'RGB':
-                raise Unsupported(f"{_describe(node)}: its mode {node.mode}")
+                raise Unsupported(f"{describe(node)}: its mode {node.mode}")
             i = node.inputs
             return self.emit(OP["COMBINE"], 0, a=self.input(i[0]), b=self.input(i[1]), c=self.input(i[2]))
         if t == 'HUE_SAT':
@@ -375,19 +362,19 @@ class _Compiler:
         if t == 'CLAMP':
             return self.emit(OP["CLAMP"], 0 if node.clamp_type == 'MINMAX' else 1, a=self.input(node.inputs["Value"]),
                              b=self.input(node.inputs["Min"]), c=self.input(node.inputs["Max"]))
-        raise Unsupported(_describe(node))
+        raise Unsupported(describe(node))
 
     @staticmethod
     def _blend_known(blend, node):
         if blend not in MIX:
-            raise Unsupported(f"{_describe(node)}: its blend {blend.title().replace('_', ' ')}")
+            raise Unsupported(f"{describe(node)}: its blend {blend.title().replace('_', ' ')}")
 
     def _mix(self, node):
         kind = node.data_type
         if kind == 'VECTOR' and node.factor_mode != 'UNIFORM':
-            raise Unsupported(f"{_describe(node)}: a non-uniform factor")
+            raise Unsupported(f"{describe(node)}: a non-uniform factor")
         if kind not in {'FLOAT', 'VECTOR', 'RGBA'}:
-            raise Unsupported(f"{_describe(node)}: its type {kind}")
+            raise Unsupported(f"{describe(node)}: its type {kind}")
         suffix = {"FLOAT": "Float", "VECTOR": "Vector", "RGBA": "Color"}[kind]
         blend = node.blend_type if kind == 'RGBA' else 'MIX'
         self._blend_known(blend, node)
@@ -402,7 +389,7 @@ class _Compiler:
         the two `to` values when it clamps."""
         if node.data_type != 'FLOAT' or node.interpolation_type != 'LINEAR':
             kind = node.interpolation_type if node.data_type == 'FLOAT' else node.data_type
-            raise Unsupported(f"{_describe(node)}: its {kind.title().replace('_', ' ')} mapping")
+            raise Unsupported(f"{describe(node)}: its {kind.title().replace('_', ' ')} mapping")
 
         def socket(name):
             return self.input(next(s for s in node.inputs if s.name == name and s.enabled))
@@ -421,24 +408,24 @@ class _Compiler:
         ramp = node.color_ramp
         if ramp.color_mode != 'RGB' or ramp.interpolation not in {'LINEAR', 'CONSTANT'}:
             what = ramp.interpolation if ramp.color_mode == 'RGB' else ramp.color_mode
-            raise Unsupported(f"{_describe(node)}: its {what.title()} interpolation")
+            raise Unsupported(f"{describe(node)}: its {what.title()} interpolation")
         stops = sorted(((float(e.position), tuple(float(x) for x in e.color)) for e in ramp.elements),
                        key=lambda s: s[0])
         if len(stops) > MAX_STOPS:
-            raise Unsupported(f"{_describe(node)}: more than {MAX_STOPS} stops")
+            raise Unsupported(f"{describe(node)}: more than {MAX_STOPS} stops")
         return self.emit(OP["RAMP"], int(ramp.interpolation == 'LINEAR'), a=self.input(node.inputs["Fac"]),
                          ramp=([p for p, _ in stops], [c for _, c in stops]))
 
     def _image(self, node, out):
         source = material_inputs.image_node_input(node)
         if source is None:
-            raise Unsupported(f"{_describe(node)}: {material_inputs.image_node_problem(node)}")
+            raise Unsupported(f"{describe(node)}: {material_inputs.image_node_problem(node)}")
         if source not in self.images:
             if self.images and source.uv_map != self.images[0].uv_map:
-                raise Unsupported(f"{_describe(node)}: another UV map than its first image's "
+                raise Unsupported(f"{describe(node)}: another UV map than its first image's "
                                   f"('{self.images[0].image.name}')")
             if len(self.images) >= MAX_IMAGES:
-                raise Unsupported(f"{_describe(node)}: more than {MAX_IMAGES} images")
+                raise Unsupported(f"{describe(node)}: more than {MAX_IMAGES} images")
             self.images.append(source)
         return self.emit(OP["IMAGE"], 2 * self.images.index(source) + (1 if out.name == "Alpha" else 0))
 
@@ -446,15 +433,15 @@ class _Compiler:
         """The Principled BSDF's Normal: a Normal Map in tangent space (through reroutes), its
         Color and Strength chains in a NORMAL_MAP instruction; None where it leaves the normal
         as it is (unlinked, or a constant flat colour)."""
-        node, out = _feeding(socket)
+        node, out = material_inputs.feeding(socket)
         if node is None:
             return None
         if node.type != 'NORMAL_MAP':
-            raise Unsupported(_describe(node))
+            raise Unsupported(describe(node))
         if node.mute:
-            raise Unsupported(f"{_describe(node)} is muted")
+            raise Unsupported(f"{describe(node)} is muted")
         if node.space != 'TANGENT':
-            raise Unsupported(f"{_describe(node)}: its {node.space.title().replace('_', ' ')} space")
+            raise Unsupported(f"{describe(node)}: its {node.space.title().replace('_', ' ')} space")
         color, strength = self.input(node.inputs["Color"]), self.input(node.inputs["Strength"])
         if color[0] == 'const' and tuple(color[1][:3]) == FLAT_NORMAL:
             return None
@@ -467,12 +454,12 @@ class _Compiler:
         Vector, Alpha, Fac (the colour's mean)."""
         if node.type == 'ATTRIBUTE':
             if node.attribute_type != 'GEOMETRY' or not node.attribute_name:
-                raise Unsupported(f"{_describe(node)}: its {node.attribute_type.title().replace('_', ' ')} attribute")
+                raise Unsupported(f"{describe(node)}: its {node.attribute_type.title().replace('_', ' ')} attribute")
             name = node.attribute_name
         else:
             name = node.layer_name
         if self.attribute is not None and name != self.attribute:
-            raise Unsupported(f"{_describe(node)}: a second colour attribute ('{self.attribute or 'the render one'}' is drawn)")
+            raise Unsupported(f"{describe(node)}: a second colour attribute ('{self.attribute or 'the render one'}' is drawn)")
         self.attribute = name
         # Fac is Factor from 5.0: a float output other than Alpha.
         return self.emit(OP["ATTRIBUTE"], 1 if out.name == "Alpha" else (2 if out.type == 'VALUE' else 0))
@@ -503,7 +490,7 @@ def read(node, names):
             if val is None:
                 continue  # a Normal Map that leaves the normal as it is
             if val[0] == 'ref' and name not in PER_PIXEL + (NORMAL,):
-                first = _describe(socket.links[0].from_node)
+                first = describe(socket.links[0].from_node)
                 raise Unsupported(f"{first}: per pixel, drawn only into Base Color, Metallic and Roughness")
         except Unsupported as e:
             unread.append((name, str(e)))
@@ -520,7 +507,7 @@ def read(node, names):
             if name not in outputs:
                 outputs[name] = comp.const_ref(values[name] if name in values else _default(node.inputs[name]))
     except Unsupported as e:  # no room left for them: no program, its chains said
-        firsts = [(name, _describe(node.inputs[name].links[0].from_node)) for name in outputs]
+        firsts = [(name, describe(node.inputs[name].links[0].from_node)) for name in outputs]
         return Chains(values, Program(), unread + [(name, f"{first}: {e}") for name, first in firsts])
     return Chains(values, Program(tuple(comp.code), tuple(comp.consts), outputs, tuple(comp.images), comp.attribute,
                                   comp.normal_uv), unread)

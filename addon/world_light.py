@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import environment_filter, material_inputs, textures
-from .material_inputs import _describe, _feeding, _from_node, _value
+from .material_inputs import _from_node, _value, describe, feeding
 
 # (image pointer, name, size, file, unsaved edits, colour space, the pixels' CRC) ->
 # EnvironmentAtlas: the filter costs a few tenths of a second. The CRC: a new image may reuse a
@@ -51,7 +51,7 @@ def read(world):
     if surface is not None and surface is not background:
         used = (f"the Background '{background.name}' lights the scene" if background is not None
                 else "the world's viewport colour lights the scene")
-        note = f"world '{world.name}': its Surface is a {_describe(surface)}, which EdgeLight does not read; {used}"
+        note = f"world '{world.name}': its Surface is a {describe(surface)}, which EdgeLight does not read; {used}"
     else:
         note = ""
     if background is None:
@@ -63,9 +63,9 @@ def read(world):
     if source is not None and source.type == 'TEX_ENVIRONMENT':
         env, said = _environment(source, strength)
     elif source is not None:
-        said.append(f"its Color comes from {_describe(source)}, which EdgeLight does not read")
+        said.append(f"its Color comes from {describe(source)}, which EdgeLight does not read")
     if _from_node(background.inputs["Strength"]) is not None:
-        said.append(f"its Strength comes from {_describe(_from_node(background.inputs['Strength']))}, "
+        said.append(f"its Strength comes from {describe(_from_node(background.inputs['Strength']))}, "
                     "which EdgeLight does not read")
     if env is not None:
         ambient = tuple(c * strength for c in env.atlas.mean)
@@ -83,14 +83,14 @@ def _environment(node, strength):
     image = node.image
     if image is None or material_inputs.image_unreadable(image):
         what = "has no image" if image is None else f"image '{image.name}' has no pixels"
-        return None, [f"its Color comes from {_describe(node)}, which {what}"]
+        return None, [f"its Color comes from {describe(node)}, which {what}"]
     w, h = image.size
     if w * h > MAX_PIXELS:
-        return None, [f"its Color comes from {_describe(node)}, whose image '{image.name}' ({w} x {h}) is past the "
+        return None, [f"its Color comes from {describe(node)}, whose image '{image.name}' ({w} x {h}) is past the "
                       f"{MAX_PIXELS // 1_000_000} million pixels EdgeLight filters"]
     said = []
     if node.projection != 'EQUIRECTANGULAR':
-        said.append(f"{_describe(node)}'s {node.projection.replace('_', ' ').title()} projection is read as "
+        said.append(f"{describe(node)}'s {node.projection.replace('_', ' ').title()} projection is read as "
                     "Equirectangular")
     rotation, why = _mapping(node.inputs["Vector"])
     if why:
@@ -98,13 +98,13 @@ def _environment(node, strength):
     try:
         atlas, key = _atlas(image)
     except (MemoryError, ValueError) as e:  # the render goes on under the socket's colour, and says why
-        return None, [f"its Color comes from {_describe(node)}, whose image '{image.name}' could not be filtered ({e})"]
+        return None, [f"its Color comes from {describe(node)}, whose image '{image.name}' could not be filtered ({e})"]
     return Environment(atlas, strength, rotation, key), said
 
 
 def _generated(socket):
     """Whether a linked socket reads a Texture Coordinate's Generated: the world's view direction."""
-    node, out = _feeding(socket)
+    node, out = feeding(socket)
     return node is not None and node.type == 'TEX_COORD' and out.name == "Generated"
 
 
@@ -114,16 +114,16 @@ def _mapping(vector):
     if source is None or _generated(vector):
         return np.eye(3), ""
     if source.type != 'MAPPING':
-        return np.eye(3), f"its Vector comes from {_describe(source)}, which EdgeLight does not read"
+        return np.eye(3), f"its Vector comes from {describe(source)}, which EdgeLight does not read"
     into = _from_node(source.inputs["Vector"])
     why = ""
     if into is None:
-        why = f"{_describe(source)}'s Vector is not linked (a constant), which EdgeLight reads as the view direction"
+        why = f"{describe(source)}'s Vector is not linked (a constant), which EdgeLight reads as the view direction"
     elif not _generated(source.inputs["Vector"]):
-        why = f"{_describe(source)}'s Vector comes from {_describe(into)}, which EdgeLight does not read"
+        why = f"{describe(source)}'s Vector comes from {describe(into)}, which EdgeLight does not read"
     location = source.inputs["Location"].default_value if "Location" in source.inputs else (0.0, 0.0, 0.0)
     if source.vector_type in {'POINT', 'TEXTURE'} and any(abs(float(v)) > 0.0 for v in location[:3]):
-        why = "; ".join(w for w in (why, f"{_describe(source)}'s Location is not used (a direction has none)") if w)
+        why = "; ".join(w for w in (why, f"{describe(source)}'s Location is not used (a direction has none)") if w)
     rot = _euler_xyz(source.inputs["Rotation"].default_value) if "Rotation" in source.inputs else np.eye(3)
     scale = np.array(source.inputs["Scale"].default_value[:3], np.float64) if "Scale" in source.inputs else np.ones(3)
     kind = source.vector_type

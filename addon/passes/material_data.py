@@ -6,7 +6,6 @@ import gpu
 
 from .. import node_program
 from . import shader_specs
-from .texture_variants import EXTEND
 
 MATERIAL_DATA = shader_specs.Block("material_data.json")
 _buffers = {}
@@ -21,19 +20,16 @@ def values(shading):
     if t is not None:
         p = t.program
         out["program"] = (float(len(p.code)), t.f0, t.shininess, float(len(p.images)))
-        out["images"] = tuple(v for i in p.images for v in (float(i.closest), float(EXTEND[i.extension]), 0.0, 0.0))
         out["outputs"] = (*(float(p.outputs[k]) for k in node_program.PER_PIXEL),
                           float(p.outputs.get(node_program.NORMAL, -1)))
-        out["code"] = tuple(float(v) for ins in p.code for v in ins[:4])
-        out["args"] = tuple(float(v) for ins in p.code for v in ins[4:])
-        out["consts"] = tuple(float(v) for c in p.consts for v in c)
+        out["code"], out["args"], out["consts"], out["images"] = p.packed
     return out
 
 
 def buffer(shading):
     """The GPUUniformBuf of a slot's MaterialData (found by the values it holds: a draw per
     instance and sample asks, so no packing before the lookup)."""
-    key = tuple((k, v) for k, v in values(shading).items())
+    key = tuple(values(shading).items())
     ubo = _buffers.get(key)
     if ubo is None:
         if len(_buffers) >= 1024:

@@ -12,6 +12,7 @@ import bpy
 import numpy as np
 
 import helpers
+from test_textures import band_cube
 from test_world_light import cycles_pixels
 
 # Opaque: Blender holds a float image's pixels premultiplied, which Cycles and EEVEE read by the
@@ -19,6 +20,11 @@ from test_world_light import cycles_pixels
 TEXELS = np.array([[0.1, 0.5, 0.9, 1.0], [0.8, 0.2, 0.05, 1.0], [1.5, 0.0, 0.4, 1.0], [0.45, 0.7, 0.25, 1.0]],
                   np.float32)
 STRIP_PX, WIDTH = 12, 128
+
+
+def warnings(rec):
+    """The render's warning lines."""
+    return [m for level, m in rec.get("messages", []) if level == 'WARNING']
 B_COLOR = (0.3, 0.6, 0.9, 1.0)
 
 
@@ -266,7 +272,7 @@ class NodeChains(unittest.TestCase):
         scene, pairs = strips_scene(CHAINS, metallic_strip=True)
         el = helpers.addon()
         rec = helpers.render()
-        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+        self.assertEqual(warnings(rec), [])
         ours = centres(rec["pixels"], len(pairs))
         # The GLSL against the add-on's Python ops, at each texel.
         # The lobe's albedo under the white world (helpers.env_specular): Specular 0 still
@@ -324,7 +330,7 @@ class NodeChains(unittest.TestCase):
         tree.links.new(other.outputs["Color"], bsdf.inputs["Roughness"])
         unknown = tree.nodes.new('ShaderNodeRGBCurve')
         tree.links.new(unknown.outputs[0], bsdf.inputs["Metallic"])
-        lines = [m for level, m in helpers.render().get("messages", []) if level == 'WARNING']
+        lines = warnings(helpers.render())
         self.assertEqual(len(lines), 1, lines)
         self.assertIn("Roughness from Image Texture 'Image Texture.001': another UV map than its first image's "
                       "('Texels')", lines[0])
@@ -374,7 +380,7 @@ class ColorAttributes(unittest.TestCase):
         scene, pairs = strips_scene(ATTRIBUTE_CHAINS, colored=True)
         el = helpers.addon()
         rec = helpers.render()
-        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+        self.assertEqual(warnings(rec), [])
         ours = centres(rec["pixels"], len(pairs))
         n = el.materials.shininess_from_roughness(0.5)
         albedo = np.zeros_like(ours)
@@ -398,33 +404,20 @@ class ColorAttributes(unittest.TestCase):
         """A cube whose vertices are all red in a point colour attribute, through Color
         Attribute into Base Color: its bands and corner patches are red, as a bevel would be;
         white (the program's constant for no attribute) or zero would not be."""
-        scene = helpers.empty_scene(160, 160, highlights=True)
-        helpers.set_world_color(scene, (0.3, 0.3, 0.3))
-        helpers.add_camera((4.0, -5.0, 3.5))
-        helpers.add_sun((0.4, -1.0, 0.8), 3.0)
-        bpy.ops.mesh.primitive_cube_add(size=2.0)
-        ob = bpy.context.object
-        col = ob.data.color_attributes.new("Paint", 'BYTE_COLOR', 'POINT')
-        col.data.foreach_set("color", np.tile([1.0, 0.0, 0.0, 1.0], len(col.data)).astype(np.float32))
-        mat = bpy.data.materials.new("Painted")
-        mat.use_nodes = True
-        bsdf = next(n for n in mat.node_tree.nodes if n.type == 'BSDF_PRINCIPLED')
-        mat.node_tree.links.new(_color_attribute(mat.node_tree, None), bsdf.inputs["Base Color"])
-        mat.edgelight.radius = 0.08
-        ob.data.materials.append(mat)
-        rec = helpers.render()
-        hl = np.asarray(rec["highlight"])
-        band = hl[..., 3] > 0.2
-        red, green = hl[band][:, 0].sum(), hl[band][:, 1].sum()
-        print(f"{int(band.sum())} band pixels: red {red:.2f}, green {green:.2f}")
-        self.assertGreater(band.sum(), 100)
+        def painted(ob, tree):
+            col = ob.data.color_attributes.new("Paint", 'BYTE_COLOR', 'POINT')
+            col.data.foreach_set("color", np.tile([1.0, 0.0, 0.0, 1.0], len(col.data)).astype(np.float32))
+            return _color_attribute(tree, None)
+        rec, count, (red, green, _blue) = band_cube("Painted", painted)
+        print(f"{count} band pixels: red {red:.2f}, green {green:.2f}")
+        self.assertGreater(count, 100)
         self.assertGreater(red, 20.0 * green)
-        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+        self.assertEqual(warnings(rec), [])
 
     def test_a_missing_attribute_reads_black_and_is_said(self):
         _scene, pairs = strips_scene([("color attribute", _color_attribute)])  # planes without one
         rec = helpers.render()
-        said = [m for level, m in rec.get("messages", []) if level == 'WARNING']
+        said = warnings(rec)
         self.assertTrue(any("reads a colour attribute the mesh does not have; it reads black" in m for m in said), said)
         ours = centres(rec["pixels"], 1)
         self.assertLess(float(ours.max()), 0.01)
@@ -463,7 +456,7 @@ class PastWhatItCanDraw(unittest.TestCase):
         mix = next(n for n in mat.node_tree.nodes if n.type == 'MIX_RGB')
         mat.node_tree.links.new(mix.outputs["Color"], bsdf.inputs["Base Color"])
         rec = helpers.render()
-        said = [m for level, m in rec.get("messages", []) if level == 'WARNING']
+        said = warnings(rec)
         self.assertEqual(len(said), 1, said)
         self.assertIn("more than 24 constants", said[0])
         self.assertIn("Base Color from", said[0])
@@ -545,7 +538,7 @@ class NormalMaps(unittest.TestCase):
     def test_normals_from_the_image(self):
         scene = self.scene()
         rec = helpers.render()
-        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+        self.assertEqual(warnings(rec), [])
         ours = self.texels(np.asarray(rec["pixels"]))
         want = self.expected()
         theirs = self.texels(cycles_pixels(scene, samples=4))
@@ -572,7 +565,7 @@ class NormalMaps(unittest.TestCase):
         n = self.NORMALS[1]
         nmap.inputs["Color"].default_value = (*((n + 1.0) / 2.0), 1.0)
         rec = helpers.render()
-        self.assertEqual([m for level, m in rec.get("messages", []) if level == 'WARNING'], [])
+        self.assertEqual(warnings(rec), [])
         got = np.asarray(rec["pixels"])[16, 64, :3]
         np.testing.assert_allclose(got, self.expected()[1], rtol=2e-3)
 

@@ -117,39 +117,49 @@ class TexelsAtTheirPlaces(unittest.TestCase):
             np.testing.assert_allclose(quadrant(px, qx, qy), expected((0.0,) * 3, want[qy, qx]), atol=2e-3)
 
 
+def band_cube(name, base_color):
+    """A cube with rounded edges (radius 0.08) seen from a corner, under a sun and a grey world;
+    its material's Base Color fed by base_color(cube, node tree) (an output socket). The
+    highlight pass's band pixels' count and summed rgb."""
+    scene = helpers.empty_scene(160, 160, highlights=True)
+    helpers.set_world_color(scene, (0.3, 0.3, 0.3))
+    helpers.add_camera((4.0, -5.0, 3.5))
+    helpers.add_sun((0.4, -1.0, 0.8), 3.0)
+    bpy.ops.mesh.primitive_cube_add(size=2.0)
+    ob = bpy.context.object
+    mat = zoo.material(name, (0.8, 0.8, 0.8))
+    mat.use_nodes = True
+    bsdf = next(n for n in mat.node_tree.nodes if n.type == 'BSDF_PRINCIPLED')
+    mat.node_tree.links.new(base_color(ob, mat.node_tree), bsdf.inputs["Base Color"])
+    mat.edgelight.radius = 0.08
+    ob.data.materials.append(mat)
+    rec = helpers.render()
+    hl = np.asarray(rec["highlight"])
+    band = hl[..., 3] > 0.2
+    return rec, int(band.sum()), hl[band][:, :3].sum(axis=0)
+
+
 class RoundedEdgesUnderTheImage(unittest.TestCase):
     def test_bands_and_corners_take_the_texel_not_the_images_mean(self):
         """A cube whose every corner maps into the red half of a half-blue, half-red image: its
         bands and corner patches are red, as a bevel under that image would be; the image's mean
         (purple) would give them as much blue as red, and a UV of zero (none found) blue."""
         helpers.needs_gpu()
-        scene = helpers.empty_scene(160, 160, highlights=True)
-        helpers.set_world_color(scene, (0.3, 0.3, 0.3))
-        helpers.add_camera((4.0, -5.0, 3.5))
-        helpers.add_sun((0.4, -1.0, 0.8), 3.0)
-        bpy.ops.mesh.primitive_cube_add(size=2.0)
-        ob = bpy.context.object
-        layer = ob.data.uv_layers.active
-        layer.data.foreach_set("uv", np.tile([0.75, 0.5], len(layer.data)).astype(np.float32))
-        img = bpy.data.images.new("Halves", 4, 2)
-        px = np.zeros((2, 4, 4), np.float32)
-        px[:, :2] = (0.0, 0.0, 1.0, 1.0)
-        px[:, 2:] = (1.0, 0.0, 0.0, 1.0)
-        img.pixels.foreach_set(px.reshape(-1))
-        mat = zoo.material("Halves", (0.8, 0.8, 0.8))
-        mat.use_nodes = True
-        bsdf = next(n for n in mat.node_tree.nodes if n.type == 'BSDF_PRINCIPLED')
-        tex = mat.node_tree.nodes.new('ShaderNodeTexImage')
-        tex.image, tex.interpolation = img, 'Closest'
-        mat.node_tree.links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
-        mat.edgelight.radius = 0.08
-        ob.data.materials.append(mat)
-        rec = helpers.render()
-        hl = np.asarray(rec["highlight"])
-        band = hl[..., 3] > 0.2
-        red, blue = hl[band][:, 0].sum(), hl[band][:, 2].sum()
-        print(f"{int(band.sum())} band pixels: red {red:.2f}, blue {blue:.2f}")
-        self.assertGreater(band.sum(), 100)
+
+        def halves(ob, tree):
+            layer = ob.data.uv_layers.active
+            layer.data.foreach_set("uv", np.tile([0.75, 0.5], len(layer.data)).astype(np.float32))
+            img = bpy.data.images.new("Halves", 4, 2)
+            px = np.zeros((2, 4, 4), np.float32)
+            px[:, :2] = (0.0, 0.0, 1.0, 1.0)
+            px[:, 2:] = (1.0, 0.0, 0.0, 1.0)
+            img.pixels.foreach_set(px.reshape(-1))
+            tex = tree.nodes.new('ShaderNodeTexImage')
+            tex.image, tex.interpolation = img, 'Closest'
+            return tex.outputs["Color"]
+        _rec, count, (red, _green, blue) = band_cube("Halves", halves)
+        print(f"{count} band pixels: red {red:.2f}, blue {blue:.2f}")
+        self.assertGreater(count, 100)
         self.assertGreater(red, 20.0 * blue)
 
 
