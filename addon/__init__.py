@@ -10,7 +10,8 @@ bl_info = {
     "category": "Render",
 }
 
-from . import color_ramp, engine, properties, render_passes, svg_output, ui, versioning  # noqa: E402
+from .extract import color_ramp  # noqa: E402
+from .host import engine, properties, render_passes, svg_output, ui, versioning  # noqa: E402
 
 
 def register():

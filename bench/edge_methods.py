@@ -55,13 +55,13 @@ def defines(method="partial", floor=False, tight_quads=True):
     return out
 
 
-def _passes_module(name):
-    """passes.NAME of the add-on loaded in this Blender ("edgelight" as a legacy add-on,
-    "bl_ext.user_default.edgelight" as an extension)."""
+def _addon_module(name):
+    """NAME ("passes.shader_lib") of the add-on loaded in this Blender ("edgelight" as a legacy
+    add-on, "bl_ext.user_default.edgelight" as an extension)."""
     for key, module in list(sys.modules.items()):
-        if key == "edgelight.passes." + name or key.endswith(".edgelight.passes." + name):
+        if key == "edgelight." + name or key.endswith(".edgelight." + name):
             return module
-    return importlib.import_module("edgelight.passes." + name)
+    return importlib.import_module("edgelight." + name)
 
 
 def use(method="partial", floor=False, tight_quads=True):
@@ -69,13 +69,13 @@ def use(method="partial", floor=False, tight_quads=True):
     restore()."""
     with open(OVERLAY, encoding="utf-8") as f:
         overlay = json.load(f)
-    program = variant(_passes_module("shader_specs").program(overlay["program"]), overlay)
-    _passes_module("shader_lib").use_variant(overlay["program"], program, SHADERS, defines(method, floor, tight_quads))
+    program = variant(_addon_module("bridge.shader_specs").program(overlay["program"]), overlay)
+    _addon_module("passes.shader_lib").use_variant(overlay["program"], program, SHADERS, defines(method, floor, tight_quads))
 
 
 def restore():
     """The add-on's own edge pass again."""
-    _passes_module("shader_lib").use_variant("edge_highlight")
+    _addon_module("passes.shader_lib").use_variant("edge_highlight")
 
 
 @contextlib.contextmanager

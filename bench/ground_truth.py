@@ -57,11 +57,11 @@ REF = f"reference ({'circular' if CIRCULAR else 'bevel'} {REF_SEGMENTS} segments
 
 def render():
     import edgelight
-    edgelight.engine.capture = True  # the pass buffers below come from the render's record
+    edgelight.host.engine.capture = True  # the pass buffers below come from the render's record
     t0 = time.perf_counter()
     bpy.ops.render.render()
     dt = time.perf_counter() - t0
-    return dt, dict(edgelight.engine.last_render)
+    return dt, dict(edgelight.host.engine.last_render)
 
 
 def configure(name, radius, method, segments, samples, exact=False):

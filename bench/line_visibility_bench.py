@@ -190,7 +190,7 @@ def enable_edgelight():
         sys.exit("line_visibility_bench: the EdgeLight add-on is not installed "
                  "(BLENDER_USER_SCRIPTS=$(scripts/install_addon.sh) blender -b ...)")
     import edgelight
-    edgelight.engine.capture = True  # the line layer and the camera come from the render's record
+    edgelight.host.engine.capture = True  # the line layer and the camera come from the render's record
     return edgelight
 
 
@@ -283,9 +283,9 @@ def type_stray(scene, edgelight, samples, kinds):
         for k in KINDS:
             for j in KINDS:
                 getattr(scene.edgelight, "line_" + j).enabled = j == k
-            edgelight.engine.last_render.clear()
+            edgelight.host.engine.last_render.clear()
             bpy.ops.render.render()
-            ink = np.asarray(edgelight.engine.last_render["lines"])[..., 3] > INK
+            ink = np.asarray(edgelight.host.engine.last_render["lines"])[..., 3] > INK
             res = compare_mask(ink, samples, kinds)
             out[k] = res["stray"] if res["ink"] else None
     finally:
@@ -372,7 +372,7 @@ def run_mesh(name, args, scene, cam, holdout, edgelight, rows):
     scene.render.use_freestyle = False
     scene.render.film_transparent = True
     bpy.ops.render.render()
-    rec_big = dict(edgelight.engine.last_render)
+    rec_big = dict(edgelight.host.engine.last_render)
     edges = ref.feature_edges(ob, rec_big["camera"].eye, CREASE_DEG)
     t1 = time.perf_counter()
     samples_big, kinds = ref.visible_samples(rec_big, ob, edges, spacing_px=args.spacing)
@@ -399,9 +399,9 @@ def run_mesh(name, args, scene, cam, holdout, edgelight, rows):
                     scene.render.use_freestyle = False
                     for k in KINDS:
                         getattr(scene.edgelight, "line_" + k).width = width
-                    edgelight.engine.last_render.clear()
+                    edgelight.host.engine.last_render.clear()
                     bpy.ops.render.render()
-                    rec = edgelight.engine.last_render
+                    rec = edgelight.host.engine.last_render
                     cam_r = rec["camera"]
                     # The same camera as the reference's, only the pixel count differs.
                     assert np.allclose(np.asarray(cam_r.projection), np.asarray(rec_big["camera"].projection), atol=1e-6)

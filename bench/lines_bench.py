@@ -174,7 +174,7 @@ def enable_edgelight():
         sys.exit("lines_bench: the EdgeLight add-on is not installed "
                  "(BLENDER_USER_SCRIPTS=$(scripts/install_addon.sh) blender -b ...)")
     import edgelight
-    edgelight.engine.capture = True  # error reports are read from the render's record
+    edgelight.host.engine.capture = True  # error reports are read from the render's record
     return edgelight
 
 
@@ -361,7 +361,7 @@ def render_once(png=None):
 
 
 def edgelight_errors():
-    mod = sys.modules.get("edgelight.engine")
+    mod = sys.modules.get("edgelight.host.engine")
     if mod is None:
         return []
     return [m for lvl, m in mod.last_render.get("messages", []) if lvl == 'ERROR']

@@ -35,9 +35,9 @@ def render(name, width_px, fillet):
         fillets.add_fillets(scene, radius, 32, exact=True)
     scene.edgelight.highlights = not fillet
     import edgelight
-    edgelight.engine.capture = True
+    edgelight.host.engine.capture = True
     bpy.ops.render.render()
-    return np.asarray(edgelight.engine.last_render["pixels"], np.float32)
+    return np.asarray(edgelight.host.engine.last_render["pixels"], np.float32)
 
 
 def main():

@@ -36,9 +36,9 @@ def fine_render(radius, reference):
     s = gt_scenes.open_scene(PART, radius, SAMPLES, (RESOLUTION[0] * SCALE, RESOLUTION[1] * SCALE))
     if reference:
         fillets.add_fillets(s, radius, REF_SEGMENTS)
-    edgelight.engine.capture = True
+    edgelight.host.engine.capture = True
     bpy.ops.render.render()
-    fine = np.array(edgelight.engine.last_render["pixels"][..., :3], np.float64)
+    fine = np.array(edgelight.host.engine.last_render["pixels"][..., :3], np.float64)
     h, w = RESOLUTION[1], RESOLUTION[0]
     return fine.reshape(h, SCALE, w, SCALE, 3).mean(axis=(1, 3))  # linear light, then display
 

@@ -35,9 +35,9 @@ import bmesh
 import bpy
 import numpy as np
 
-import edgelight.lines as lines
-import edgelight.svg_output as svg_output
-import edgelight.svg_write as svg_write
+import edgelight.host.svg_output as svg_output
+import edgelight.linework.lines as lines
+import edgelight.linework.svg_write as svg_write
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NEAR_PX = 1.5

@@ -71,10 +71,10 @@ def orbit(s, frame):
 
 def render(s):
     el = addon()
-    el.engine.capture = True
-    el.engine.last_render.clear()
+    el.host.engine.capture = True
+    el.host.engine.last_render.clear()
     bpy.ops.render.render()
-    rec = el.engine.last_render
+    rec = el.host.engine.last_render
     return np.array(rec["pixels"], np.float64), np.array(rec["lines"], np.float64)
 
 

@@ -168,8 +168,8 @@ def measure(name, distance=None, frames=FRAMES, repeat=REPEAT):
             result[label] = min(result.get(label, float("inf")), draw_ms(orbit, frames, 1))
     edge_methods.restore()
     import edgelight
-    c = edgelight.viewport.last_state.counters
-    tris = sum(len(inst.mesh.corner_pos) // 3 for inst in edgelight.viewport.last_state.instances)
+    c = edgelight.host.viewport.last_state.counters
+    tris = sum(len(inst.mesh.corner_pos) // 3 for inst in edgelight.host.viewport.last_state.instances)
     rows.append((name, tris, c.edges_drawn, c.edges_culled, result))
     print(name, tris, result, flush=True)
 
@@ -230,7 +230,7 @@ def run(gen):
 
 def main():
     import edgelight
-    edgelight.engine.capture = True  # keep the viewport state and renders for the counts read here
+    edgelight.host.engine.capture = True  # keep the viewport state and renders for the counts read here
     run(steps())
 
 

@@ -149,7 +149,7 @@ def toon_scene(mesh_dir):
     s = mat.edgelight
     s.shading = 'RAMP'
     import importlib
-    color_ramp = importlib.import_module(os.environ.get("EDGELIGHT_MODULE", "edgelight") + ".color_ramp")
+    color_ramp = importlib.import_module(os.environ.get("EDGELIGHT_MODULE", "edgelight") + ".extract.color_ramp")
     s.shade_ramp = color_ramp.new_ramp(
         ((0.0, (0.05, 0.07, 0.12)), (0.3, (0.22, 0.3, 0.45)), (0.75, (0.55, 0.68, 0.85))), 'CONSTANT')
     s.radius, s.K, s.use_custom_shininess, s.shininess = 0.006, 1.5, True, 40.0

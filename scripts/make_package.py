@@ -2,8 +2,8 @@
 """Assembles the add-on package an artist installs: one zip, edgelight/ inside, holding the
 Python package, blender_manifest.toml (Blender 4.2+ extension), bl_info (Blender 3.4 legacy
 add-on), the shaders, the platform's library (libedgelight.so, edgelight.dll, libedgelight.dylib:
-addon/platforms.py) and its record (size and SHA-256, which the add-on checks before loading the
-library: addon/library_check.py), the manifest's platforms line set to the platform. Called by the
+addon/bridge/platforms.py) and its record (size and SHA-256, which the add-on checks before loading the
+library: addon/bridge/library_check.py), the manifest's platforms line set to the platform. Called by the
 CMake target `package_addon` (linux-x64) and scripts/package_addon.sh (every platform).
 
     make_package.py ROOT LIBRARY OUT_ZIP [PLATFORM]
@@ -15,7 +15,7 @@ import re
 import sys
 import zipfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "addon"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "addon", "bridge"))
 import library_check  # noqa: E402  (plain Python: the add-on's check and this record share one format)
 import platforms  # noqa: E402  (the library's name per platform, as the loader picks it)
 

@@ -1,5 +1,5 @@
 /* Corner patch pass: one screen-space square per corner where three rounded convex (or three
- * concave) edges meet (addon/corner_patches.py), covering the image of the ball of radius r that
+ * concave) edges meet (addon/geometry/corner_patches.py), covering the image of the ball of radius r that
  * touches the three faces; the fragment shader finds the ball's point each pixel sees
  * (edge_corner.frag.glsl). corner.xy picks the square's corner (-1, +1), corner.z is the radius,
  * corner.w the fold: +1 convex (the ball under the faces), -1 concave (over them, in the air). */

@@ -1,6 +1,6 @@
-/* The world's light (addon/world_light.py): a uniform colour, frame.ambient, or with
+/* The world's light (addon/extract/world_light.py): a uniform colour, frame.ambient, or with
  * EL_ENVIRONMENT an Environment Texture filtered into the `env_map` atlas
- * (addon/environment_filter.py): equirectangular tiles of the radiance prefiltered by GGX
+ * (addon/extract/environment_filter.py): equirectangular tiles of the radiance prefiltered by GGX
  * roughness (the split sum's first factor, docs/highlight_math.md) and of the irradiance E / pi.
  * Texels are fetched and blended here, not by a sampler's state: u wraps around the sphere,
  * v stops at the poles. Without EL_ENVIRONMENT every lookup is frame.ambient, as before. */

@@ -1,4 +1,4 @@
-/* The node program (shaders/material_data.json, addon/node_program.py): what a material's node
+/* The node program (shaders/material_data.json, addon/extract/node_program.py): what a material's node
  * chains compute from its image and its colour attribute, run per pixel by the surface, band and corner programs. The
  * ops are EEVEE's node library's (mix_*, math_*, the colour band), in the add-on's own words in
  * node_program.apply, which a test holds this to. Operands below EL_MAT_CONST are the block's

@@ -3,7 +3,8 @@ slot."""
 import gpu
 import numpy as np
 
-from .. import band_ends, compat, rounded_outline
+from .. import compat
+from ..geometry import band_ends, rounded_outline
 from . import shader_lib
 
 

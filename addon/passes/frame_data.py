@@ -2,7 +2,7 @@
 name in the layout shaders/frame_data.json gives (shader_specs.Block)."""
 import numpy as np
 
-from . import shader_specs
+from ..bridge import shader_specs
 
 # The block's layout and the light limit, read from the one description the shaders are built from.
 FRAME_DATA = shader_specs.Block("frame_data.json")

@@ -16,13 +16,10 @@ faces a segment), so a batch's vertices carry one integer each.
 import gpu
 import numpy as np
 
-from .. import compat, native
+from .. import compat
+from ..bridge import native
+from ..linework.line_visibility import OUTLINE_TYPES, REL_BIAS
 from . import shader_lib
-
-# Relative part of the depth bias (line.frag.glsl), against float rounding of depths.
-REL_BIAS = 1e-4
-# Line types that can lie on an outline: the background beside them does not hide them.
-OUTLINE_TYPES = frozenset({"silhouette", "border", "contour", "wire"})
 
 # A chord is drawn for the segments it stands for when none of them strays farther than this
 # from it on screen (pixels; a bound, docs/lines.md derives it).

@@ -4,8 +4,8 @@ add-on is loaded (a scene has few distinct materials): a draw binds it, nothing 
 frame."""
 import gpu
 
-from .. import node_program
-from . import shader_specs
+from ..bridge import shader_specs
+from ..extract import node_program
 
 MATERIAL_DATA = shader_specs.Block("material_data.json")
 _buffers = {}

@@ -7,7 +7,8 @@ import contextlib
 import gpu
 
 from .. import compat
-from . import shader_lib, shader_specs
+from ..bridge import shader_specs
+from . import shader_lib
 
 
 def _spec():

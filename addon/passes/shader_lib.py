@@ -14,8 +14,8 @@ import os
 import gpu
 
 from .. import compat
-from . import shader_specs
-from .shader_specs import shader_dir
+from ..bridge import shader_specs
+from ..bridge.shader_specs import shader_dir
 
 _cache = {}
 # id(program) -> (its declared push constants, those its compiler kept, its declared samplers).

@@ -7,7 +7,8 @@ it, and a light's size softens the shadow in the lookup (docs/shadows.md)."""
 import gpu
 import numpy as np
 
-from .. import compat, textures
+from .. import compat
+from ..extract import textures
 from . import frame_data, material_data, shader_lib
 from .shadow_plan import atlas_grid, layer_casters, merged_casters
 from .texture_variants import SURFACE_MODES, texture_defines, texture_key

@@ -9,8 +9,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..closed_surfaces import box_corners
-from . import shader_specs
+from ..bridge import shader_specs
+from ..geometry.closed_surfaces import box_corners
 
 _SPEC = shader_specs.load("frame_data.json")
 SHADOW = _SPEC["enums"]["EL_SHADOW"]

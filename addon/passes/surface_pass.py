@@ -3,7 +3,8 @@ whiteout), into the surface targets; with ids, which instance and face covers ea
 import gpu
 import numpy as np
 
-from .. import closed_surfaces, rounded_outline, textures
+from ..extract import textures
+from ..geometry import closed_surfaces, rounded_outline
 from . import frame_data, material_data, pass_state, shader_lib, toon
 from .lighting_inputs import NONE
 from .targets import surface_outputs

@@ -2,7 +2,8 @@
 import gpu
 import numpy as np
 
-from .. import compat, native
+from .. import compat
+from ..bridge import native
 
 _state = {}
 

@@ -4,7 +4,8 @@ import gpu
 import numpy as np
 
 from .. import compat
-from . import batches, pass_state, shader_lib, shader_specs
+from ..bridge import shader_specs
+from . import batches, pass_state, shader_lib
 from .lighting_inputs import EnvironmentMaps
 from .shadow_pass import ShadowMaps
 

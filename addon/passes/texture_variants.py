@@ -1,7 +1,7 @@
 """Which program variant draws a slot's node program and image (materials.BaseTexture): its
 texture key, shared by the surface, edge and shadow passes, and the defines of that variant
 (shaders/textures.glsl, material_program.glsl)."""
-from . import shader_specs
+from ..bridge import shader_specs
 
 # The surface program's shading modes, an image's extensions and its alpha's cuts
 # (shaders/surface_modes.json).

@@ -4,7 +4,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from .. import compat, textures
+from .. import compat
+from ..extract import textures
 
 RAMP_SIZE = 256
 # Texels an X-Toon map keeps per axis: the lookup reads lighting (x) and depth or orientation

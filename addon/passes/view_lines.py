@@ -2,8 +2,8 @@
 view-dependent silhouettes and contours (native view calls)."""
 import numpy as np
 
-from .. import lines as ink
-from .. import native
+from ..bridge import native
+from ..linework import lines as ink
 
 
 def line_instances(scene, gpu_meshes, view_batches):

@@ -67,7 +67,7 @@ el_tools::LoadedMesh repeated(const el_tools::LoadedMesh& one, int side, double 
     return m;
 }
 
-// Blender's roughness -> Blinn exponent (addon/materials.py).
+// Blender's roughness -> Blinn exponent (addon/extract/materials.py).
 float shininess(double roughness) { return float(2.0 / std::pow(roughness, 4.0) - 2.0); }
 
 // distance: of the grid's size, along the benchmark's view direction.

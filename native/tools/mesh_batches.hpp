@@ -1,4 +1,4 @@
-// What the passes draw for one mesh, built on the CPU as addon/scene_sync.py and
+// What the passes draw for one mesh, built on the CPU as addon/extract/scene_sync.py and
 // addon/passes/batches.py build it: surface corners, the rounded edges the library classifies,
 // and their screen-space quads.
 #pragma once

@@ -83,7 +83,7 @@ PassSpec read_pass(const json& p) {
     return s;
 }
 
-// An el_table_info field by its name in the C header (as addon/native.py's TableInfo has it).
+// An el_table_info field by its name in the C header (as addon/bridge/native.py's TableInfo has it).
 double table_field(const el_table_info& info, const std::string& field) {
     const std::map<std::string, double> fields = {
         {"layout", double(info.layout)},

@@ -17,7 +17,7 @@
 
 namespace el_tools {
 
-// One material, as addon/materials.py's Shading: Blinn-Phong surface, rounded edges.
+// One material, as addon/extract/materials.py's Shading: Blinn-Phong surface, rounded edges.
 struct Material {
     glm::vec3 base_color{0.8f};
     float alpha = 1.0f;

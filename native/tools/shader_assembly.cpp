@@ -90,7 +90,7 @@ std::string join_files(const std::string& dir, const json& files, const std::str
 }
 
 // fragment_out, then the outputs of each fragment_out_if whose define is set, in the defines'
-// sorted order (as addon/passes/shader_specs.py's fragment_outputs).
+// sorted order (as addon/bridge/shader_specs.py's fragment_outputs).
 std::vector<ProgramInterface::Var> fragment_outputs(const json& d, const std::vector<std::pair<std::string, std::string>>& defines) {
     auto out = vars(list_of(d, "fragment_out"));
     const auto it = d.find("fragment_out_if");

@@ -1,6 +1,6 @@
 // Typedef specs: JSON files in shaders/ (frame_data.json, surface_modes.json) that are the one
 // description of a contract between GLSL and its hosts. A program that lists one in its typedefs
-// gets the GLSL written from it (the same text addon/passes/shader_specs.py writes, checked by
+// gets the GLSL written from it (the same text addon/bridge/shader_specs.py writes, checked by
 // tests/addon/test_shader_specs.py), and a host packs a spec's struct by member name (Block).
 #pragma once
 

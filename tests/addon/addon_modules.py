@@ -9,7 +9,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 
 
 def addon_module(name):
-    """addon/NAME ("native", "passes.shader_specs") imported as part of its package, without
+    """addon/NAME ("bridge.native", "passes.camera") imported as part of its package, without
     running the package's __init__ (which registers with Blender)."""
     if "edgelight" not in sys.modules:
         pkg = importlib.util.module_from_spec(importlib.machinery.ModuleSpec("edgelight", None, is_package=True))

@@ -5,7 +5,7 @@ import numpy as np
 
 from addon_modules import addon_module
 
-Corners = addon_module("corner_patches").Corners
+Corners = addon_module("geometry.corner_patches").Corners
 
 # Two sides of one sector (edges meeting at the corner, the faces between them) turn by at most
 # this: the facets of one smooth patch, each fold under 30 degrees, may add up to more than one

@@ -8,8 +8,8 @@ import numpy as np
 
 from addon_modules import addon_module
 
-rounded_outline = addon_module("rounded_outline")
-radius_scale = addon_module("radius_scale").radius_scale
+rounded_outline = addon_module("geometry.rounded_outline")
+radius_scale = addon_module("geometry.radius_scale").radius_scale
 
 
 def ball_scale(m, m1, m2, m3):

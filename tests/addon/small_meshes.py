@@ -4,7 +4,7 @@ import numpy as np
 
 from addon_modules import addon_module
 
-radius_clamp = addon_module("radius_clamp")
+radius_clamp = addon_module("geometry.radius_clamp")
 
 
 def mesh(verts, polys):

@@ -1,4 +1,4 @@
-"""Where bands end (addon/band_ends.py), on meshes small enough to know the answer: a box's
+"""Where bands end (addon/geometry/band_ends.py), on meshes small enough to know the answer: a box's
 corners (every edge rounded: mitres at 45 degrees), a box edge cut by a collinear vertex (square
 ends where the pieces meet), a box with unrounded sides (square ends, the corner being a right
 angle), and a wedge whose acute face corner cuts the band along its side."""
@@ -10,8 +10,8 @@ import numpy as np
 from addon_modules import addon_module
 from small_meshes import box, edge_frame, mesh
 
-band_ends = addon_module("band_ends")
-radius_clamp = addon_module("radius_clamp")
+band_ends = addon_module("geometry.band_ends")
+radius_clamp = addon_module("geometry.radius_clamp")
 
 
 def angles(positions, edges, polys, tris, rounded):

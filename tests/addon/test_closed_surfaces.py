@@ -1,4 +1,4 @@
-"""Which surfaces are closed (addon/closed_surfaces.py), and where an instance's back faces
+"""Which surfaces are closed (addon/geometry/closed_surfaces.py), and where an instance's back faces
 cannot show: on a cube whole, opened, half wound the other way, with a fin, and seen from
 outside, from inside and across the near plane."""
 import unittest
@@ -7,7 +7,7 @@ import numpy as np
 
 from addon_modules import addon_module
 
-closed_surfaces = addon_module("closed_surfaces")
+closed_surfaces = addon_module("geometry.closed_surfaces")
 
 # A unit cube's twelve triangles, wound outwards.
 CUBE = np.array([[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],

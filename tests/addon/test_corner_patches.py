@@ -1,4 +1,4 @@
-"""Where corner patches go (addon/corner_patches.py), on meshes small enough to know the answer:
+"""Where corner patches go (addon/geometry/corner_patches.py), on meshes small enough to know the answer:
 a box with every edge rounded (eight corners, the ball r under each face), a room's corner (three
 concave edges: the ball r over each face, in the air), the same box with a
 top edge cut by a collinear vertex (two rounded edges there: no corner; the eight stay), a box
@@ -16,7 +16,7 @@ import numpy as np
 from addon_modules import addon_module
 from small_meshes import box, edge_frame, mesh
 
-corner_patches = addon_module("corner_patches")
+corner_patches = addon_module("geometry.corner_patches")
 
 
 def corners(positions, edges, polys, tris, rounded, radius=0.1):

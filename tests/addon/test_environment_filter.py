@@ -1,4 +1,4 @@
-"""The world image's filter (addon/environment_filter.py) against closed forms: a uniform image
+"""The world image's filter (addon/extract/environment_filter.py) against closed forms: a uniform image
 gives itself in every tile; under radiance 1 above the horizon the irradiance tile holds
 E / pi = (1 + sin elevation) / 2, and under radiance z it holds 2/3 n.z; a GGX level of a
 linear image is a multiple of its direction's z; the row-pair FFT equals the direct sum over
@@ -10,7 +10,7 @@ import numpy as np
 
 from addon_modules import addon_module
 
-ef = addon_module("environment_filter")
+ef = addon_module("extract.environment_filter")
 
 
 def tile(atlas, rect):

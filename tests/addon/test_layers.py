@@ -1,13 +1,19 @@
-"""The add-on's layers, as docs/architecture.md states them: a module whose docstring says it
-imports no bpy ("No bpy") imports no Blender module at its top level, directly or through the
-add-on modules it imports, so plain-Python tests and tools can load it; and the add-on's own
-imports form no circle at module level. Read from the sources (ast), nothing is imported."""
+"""The add-on's layers, as docs/architecture.md states them. Every module but the package's
+__init__ and compat.py lives in a layer's folder; a layer imports only from the layers below it
+(bridge, geometry, linework, extract, passes, host; compat.py between linework and extract), in
+functions too; the bpy-free layers (bridge, geometry, linework) import no Blender module, directly
+or through what they import; a module elsewhere whose docstring says it imports no bpy ("No
+bpy") keeps to that at its top level; and the add-on's own imports form no circle at module
+level. Read from the sources (ast), nothing is imported."""
 import ast
 import os
 import sys
 import unittest
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "addon")
+# Bottom to top: a module imports from its own layer and those before it.
+LAYERS = ("bridge", "geometry", "linework", "compat", "extract", "passes", "host")
+BPY_FREE = ("bridge", "geometry", "linework")
 BLENDER = {"bpy", "gpu", "mathutils", "bmesh", "blf", "bpy_extras", "gpu_extras", "addon_utils", "bl_ui", "idprop"}
 
 
@@ -22,9 +28,10 @@ def modules():
     return out
 
 
-def top_level_imports(name, path, known):
-    """(Blender modules, add-on modules) imported at the top level of module `name` (outside any
-    function: a function's import runs only when it is called)."""
+def top_level_imports(name, path, known, nested=False):
+    """(Blender modules, add-on modules, docstring) imported at the top level of module `name`
+    (outside any function: a function's import runs only when it is called); `nested`: in its
+    functions too."""
     with open(path, encoding="utf-8") as f:
         tree = ast.parse(f.read())
     package = name.rsplit(".", 1)[0] if "." in name and not path.endswith("__init__.py") else \
@@ -33,7 +40,7 @@ def top_level_imports(name, path, known):
 
     def visit(nodes):
         for node in nodes:
-            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)) and not nested:
                 continue
             if isinstance(node, ast.Import):
                 for a in node.names:
@@ -54,7 +61,7 @@ def top_level_imports(name, path, known):
                     elif target in known or target == "":
                         if target:
                             own.add(target)
-            elif isinstance(node, ast.ClassDef):
+            elif isinstance(node, (ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)):
                 visit(node.body)
             else:
                 visit(ast.iter_child_nodes(node))
@@ -63,10 +70,51 @@ def top_level_imports(name, path, known):
     return blender, own, ast.get_docstring(tree) or ""
 
 
+def layer_of(name):
+    """The layer of module `name` ("compat" for compat.py), None for the package's __init__ and
+    for a module outside every layer."""
+    head = name.split(".")[0]
+    return head if head in LAYERS else None
+
+
 class Layers(unittest.TestCase):
     def setUp(self):
         self.known = modules()
         self.graph = {n: top_level_imports(n, p, self.known) for n, p in self.known.items()}
+        self.every = {n: top_level_imports(n, p, self.known, nested=True) for n, p in self.known.items()}
+
+    def test_every_module_lives_in_a_layer(self):
+        outside = sorted(n for n in self.known if n != "__init__" and layer_of(n) is None)
+        self.assertEqual(outside, [], "modules outside the layers' folders")
+        for layer in LAYERS:
+            self.assertIn(layer, self.known, f"the {layer} layer")
+
+    def test_layers_import_only_from_below(self):
+        rank = {layer: i for i, layer in enumerate(LAYERS)}
+        upward = []
+        for name, (_b, own, _doc) in self.every.items():
+            if name == "__init__":
+                continue  # the package's __init__ registers every layer
+            for dep in sorted(own):
+                if dep == "__init__" or rank[layer_of(dep)] > rank[layer_of(name)]:
+                    upward.append(f"{name} -> {dep}")
+        self.assertEqual(upward, [], "imports from a higher layer")
+
+    def test_bpy_free_layers_reach_no_blender_module(self):
+        free = [n for n in self.known if layer_of(n) in BPY_FREE]
+        self.assertGreaterEqual(len(free), 15, free)
+        bad = {}
+        for name in free:
+            seen, todo = set(), [name]
+            while todo:  # through imports in functions too: a lazy `import bpy` needs Blender all the same
+                n = todo.pop()
+                if n not in seen:
+                    seen.add(n)
+                    todo.extend(self.every[n][1])
+            for dep in sorted(seen):
+                if self.every[dep][0]:
+                    bad.setdefault(name, []).append(f"{dep} imports {sorted(self.every[dep][0])}")
+        self.assertEqual(bad, {}, "bpy-free layers that reach Blender")
 
     def closure(self, name):
         seen, todo = set(), [name]

@@ -1,4 +1,4 @@
-"""addon/library_check.py in plain Python (no Blender): damaged copies of the built library are
+"""addon/bridge/library_check.py in plain Python (no Blender): damaged copies of the built library are
 refused before anything maps them, intact ones pass.
 
     EDGELIGHT_LIBRARY_UNDER_TEST=build/native/libedgelight.so python3 tests/addon/test_library_check.py
@@ -14,7 +14,7 @@ import unittest
 from unittest import mock
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(ROOT, "addon"))
+sys.path.insert(0, os.path.join(ROOT, "addon", "bridge"))
 import library_check  # noqa: E402  (plain Python, imports no bpy)
 
 LIBRARY = os.environ.get("EDGELIGHT_LIBRARY_UNDER_TEST", os.path.join(ROOT, "build", "native", "libedgelight.so"))

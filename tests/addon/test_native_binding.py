@@ -1,4 +1,4 @@
-"""addon/native.py in plain Python (no Blender), against the built library and its header.
+"""addon/bridge/native.py in plain Python (no Blender), against the built library and its header.
 
 The header's layouts and constants come from a C program generated from edgelight.h
 (abi_dump_source.py), so a field or flag changed in C and not in the binding fails here.
@@ -16,7 +16,7 @@ import numpy as np
 
 from addon_modules import addon_module
 
-native = addon_module("native")  # imports no bpy
+native = addon_module("bridge.native")  # imports no bpy
 
 # Constants the binding does not mirror, and why.
 NOT_MIRRORED = {
@@ -66,7 +66,7 @@ class HeaderAgreement(unittest.TestCase):
     def test_the_outline_records_are_shaders_outline_layout_json(self):
         """The edge and corner records el_outline_lines reads are the surface program's outline
         texels: the header's counts are the layout's (shaders/outline_layout.json)."""
-        layout = addon_module("passes.shader_specs").load("outline_layout.json")["defines"]
+        layout = addon_module("bridge.shader_specs").load("outline_layout.json")["defines"]
         constants = header()["constants"]
         for name in ("EL_OUTLINE_EDGE_TEXELS", "EL_OUTLINE_CORNER_TEXELS"):
             with self.subTest(constant=name):

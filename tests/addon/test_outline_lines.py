@@ -1,4 +1,4 @@
-"""Silhouette lines on the rounded outline (addon/outline_lines.py, the library's
+"""Silhouette lines on the rounded outline (addon/geometry/outline_lines.py, the library's
 el_outline_lines): a rounded edge's silhouette end moves onto its fillet's outline point, in
 closed form for a 90-degree edge; two moved segments that meet at a corner end where their lines
 cross, or, round a corner patch's ball, on its circle with an arc of it between; an unmoved
@@ -17,8 +17,8 @@ from small_meshes import box as small_box
 from small_meshes import edge_frame
 from test_rounded_outline import extract_of
 
-native = addon_module("native")
-outline_lines = addon_module("outline_lines")
+native = addon_module("bridge.native")
+outline_lines = addon_module("geometry.outline_lines")
 
 
 def on_rounded_outline(extract, edge_pairs, seg, matrix, camera):

@@ -9,8 +9,8 @@ import unittest
 
 from addon_modules import addon_module
 
-shader_specs = addon_module("passes.shader_specs")
-native = addon_module("native")  # imports no bpy; the library is not loaded
+shader_specs = addon_module("bridge.shader_specs")
+native = addon_module("bridge.native")  # imports no bpy; the library is not loaded
 
 # Blender's names that edgelight-render maps (native/tools/pass_state.cpp).
 FORMATS = {"RGBA32F", "RG32F", "R32F", "DEPTH_COMPONENT32F"}

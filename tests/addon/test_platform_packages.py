@@ -1,6 +1,6 @@
 """Every platform's package (scripts/package_addon.sh): its library is the platform's (format and
 architecture read from the file: ELF x86-64, PE x86-64 DLL, Mach-O arm64 / x86_64), under the
-name the loader picks there (addon/platforms.py), beside its checksum record; its manifest names
+name the loader picks there (addon/bridge/platforms.py), beside its checksum record; its manifest names
 that platform alone; it exports exactly the el_ functions edgelight.h declares (read with the
 platform's binutils or LLVM's tools); and Blender's own `extension validate` accepts it (bpy
 4.5). Their dependencies are checked where they are built (native.windows, native.macos).
@@ -19,7 +19,7 @@ import unittest
 import zipfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(ROOT, "addon"))
+sys.path.insert(0, os.path.join(ROOT, "addon", "bridge"))
 import platforms  # noqa: E402  (plain Python)
 
 PACKAGES = os.environ.get("PACKAGE_DIR", os.path.join(ROOT, "out"))

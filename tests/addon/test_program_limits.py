@@ -18,7 +18,7 @@ import unittest
 
 from addon_modules import addon_module
 
-shader_specs = addon_module("passes.shader_specs")
+shader_specs = addon_module("bridge.shader_specs")
 
 PUSH_CONSTANT_BYTES = 128
 # std430 sizes of the push constant types, a vec3 counted as 16 (its alignment).

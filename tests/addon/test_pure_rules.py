@@ -16,11 +16,12 @@ import numpy as np
 
 from addon_modules import addon_module
 
-native = addon_module("native")
-lines = addon_module("lines")
-edge_data = addon_module("edge_data")
-edge_choice = addon_module("edge_choice")
-material_defaults = addon_module("material_defaults")
+native = addon_module("bridge.native")
+lines = addon_module("linework.lines")
+edge_data = addon_module("geometry.edge_data")
+edge_choice = addon_module("geometry.edge_choice")
+material_defaults = addon_module("extract.material_defaults")
+clamp_counts = addon_module("geometry.radius_clamp_notes")
 
 NO = native.NO_EDGE
 
@@ -292,6 +293,35 @@ class ChooseEdges(unittest.TestCase):
         self.assertTrue(edge_choice.same_edges(a, edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading()])))
         self.assertFalse(edge_choice.same_edges(a, edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading(radius=0.02)])))
         self.assertFalse(edge_choice.same_edges(a, edge_choice.choose_edges(edges_of([60.0, 10.0]), [Shading()])))
+
+
+class RadiusClampCounts(unittest.TestCase):
+    """What the material panel's note counts (radius_clamp_notes.count): three rounded edges
+    between materials A (slot 0, radius 0.5) and B (slot 1, radius 0.1), their faces allowing
+    0.2, 0.05 and 1.0. Edge 0 (A | A) is clamped for A; edge 1 (A | B, radius 0.1) for both, each
+    having asked more than 0.05; edge 2 (B | B) for neither."""
+
+    def counts(self):
+        shading = [Shading(radius=0.5, material="A"), Shading(radius=0.1, material="B"), Shading(material="")]
+        sides = ((np.array([0, 0, 1]), np.array([True] * 3), np.array([0.5, 0.5, 0.1])),
+                 (np.array([0, 1, 1]), np.array([True] * 3), np.array([0.5, 0.1, 0.1])))
+        return clamp_counts.count(shading, sides, np.array([0.2, 0.05, 1.0]))
+
+    def test_each_material_counts_its_rounded_and_clamped_edges(self):
+        a, b = self.counts()
+        self.assertEqual((a.material, a.radius, a.rounded, a.clamped, a.smallest), ("A", 0.5, 2, 2, 0.05))
+        self.assertEqual((b.material, b.radius, b.rounded, b.clamped, b.smallest), ("B", 0.1, 2, 1, 0.05))
+
+    def test_totals_over_geometries_at_the_current_radius(self):
+        counts = self.counts() * 2  # two geometries
+        self.assertEqual(clamp_counts.total(counts, "A", 0.5), (4, 4, 0.05))
+        self.assertIsNone(clamp_counts.total(counts, "A", 0.25), "counted at another radius")
+        self.assertIsNone(clamp_counts.total(counts, "C", 0.5))
+
+    def test_the_choice_returns_its_counts(self):
+        got = edge_choice.choose(edges_of([60.0, 60.0]), [Shading(material="A")])
+        self.assertEqual(len(got.edges[0]), 2)
+        self.assertEqual([(c.material, c.rounded, c.clamped) for c in got.clamps], [("A", 2, 0)])
 
 
 def library():

@@ -1,4 +1,4 @@
-"""The radius clamp's widths (addon/radius_clamp.py) on patches small enough to know the answer:
+"""The radius clamp's widths (addon/geometry/radius_clamp.py) on patches small enough to know the answer:
 a flat face triangulated into many small triangles is as wide to a fillet as the whole face, a
 faceted curved patch as its surface is long, and a walk across either stops at the first edge
 that ends the patch."""
@@ -10,7 +10,7 @@ import numpy as np
 from addon_modules import addon_module
 from small_meshes import mesh
 
-radius_clamp = addon_module("radius_clamp")
+radius_clamp = addon_module("geometry.radius_clamp")
 
 
 def edge_polygons(edges, polys):

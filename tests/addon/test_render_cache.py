@@ -1,4 +1,4 @@
-"""What the final render's extraction cache keeps (addon/render_cache.py), in plain Python: per
+"""What the final render's extraction cache keeps (addon/extract/render_cache.py), in plain Python: per
 scene, what its previous frame used survives a frame change; two scenes rendered in one job keep
 each other's; a job's end keeps what each scene's last frame used, or nothing; the fingerprint
 tells arrays apart by content, dtype and shape.
@@ -11,7 +11,7 @@ import numpy as np
 
 from addon_modules import addon_module
 
-render_cache = addon_module("render_cache")
+render_cache = addon_module("extract.render_cache")
 
 
 class Cache(unittest.TestCase):

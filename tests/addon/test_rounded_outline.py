@@ -1,5 +1,5 @@
 """Which rounded edges each surface triangle lists for the strip a rounded silhouette leaves out
-(addon/rounded_outline.py), on meshes small enough to know the answer: a box (each half of a
+(addon/geometry/rounded_outline.py), on meshes small enough to know the answer: a box (each half of a
 face lists its own sides first, then its quad's other two, which touch its corners), a box whose
 faces are grids of quads (the strip's triangles reach across the facets along an edge, as far as
 the fillet's setback, and no farther), a cylinder whose cap's long triangles cut across its rims'
@@ -14,10 +14,10 @@ import rounded_outline_reference as reference
 from addon_modules import addon_module
 from small_meshes import box, edge_frame, mesh
 
-rounded_outline = addon_module("rounded_outline")
-edge_choice = addon_module("edge_choice")
-corner_patches = addon_module("corner_patches")
-native = addon_module("native")
+rounded_outline = addon_module("geometry.rounded_outline")
+edge_choice = addon_module("geometry.edge_choice")
+corner_patches = addon_module("geometry.corner_patches")
+native = addon_module("bridge.native")
 
 
 def extract_of(positions, edges, polys, tris, rounded, radius=0.1, corners=False):
@@ -232,7 +232,7 @@ class RoundedOutline(unittest.TestCase):
         the edges (their faces' normals, some turned off the faces) and of the vertices as
         corners, lists of 2 to 8: the same lists, slot for slot."""
         rng = np.random.default_rng(9)
-        radius_clamp = addon_module("radius_clamp")
+        radius_clamp = addon_module("geometry.radius_clamp")
         listed_any = 0
         for n in (1, 2, 3, 4):
             positions, edges, polys, tris = grid_box(n)

@@ -1,5 +1,5 @@
 """The typedef specs of shaders/ (frame_data.json, surface_modes.json) in plain Python: the add-on
-(addon/passes/shader_specs.py) and edgelight-render (native/tools/typedef_spec.cpp) write the
+(addon/bridge/shader_specs.py) and edgelight-render (native/tools/typedef_spec.cpp) write the
 same GLSL from them and derive the same layout, so the two hosts cannot drift apart.
 
     EDGELIGHT_TYPEDEF_DUMP=build/tests/addon/typedef_spec_dump python3 tests/addon/test_shader_specs.py
@@ -13,7 +13,7 @@ import numpy as np
 
 from addon_modules import ROOT, addon_module
 
-shader_specs = addon_module("passes.shader_specs")
+shader_specs = addon_module("bridge.shader_specs")
 SHADERS = os.path.join(ROOT, "shaders")
 
 

@@ -13,9 +13,9 @@ from small_meshes import box as small_box
 from small_meshes import mesh as small_mesh
 from test_rounded_outline import extract_of
 
-native = addon_module("native")
-lines = addon_module("lines")
-outline_lines = addon_module("outline_lines")
+native = addon_module("bridge.native")
+lines = addon_module("linework.lines")
+outline_lines = addon_module("geometry.outline_lines")
 
 
 def camera(perspective):

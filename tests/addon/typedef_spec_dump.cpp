@@ -1,5 +1,5 @@
 // What native/tools/typedef_spec.cpp makes of a typedef spec, printed as JSON for
-// test_shader_specs.py to compare with the add-on's Python (addon/passes/shader_specs.py):
+// test_shader_specs.py to compare with the add-on's Python (addon/bridge/shader_specs.py):
 //   typedef_spec_dump SHADER_DIR FILE -> {"glsl": ..., "size": n, "defines": {...},
 //                                         "members": {name: [offset, count, floats]}}
 #include "typedef_spec.hpp"

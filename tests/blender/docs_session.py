@@ -64,7 +64,7 @@ def redraw_all():
 
 
 def viewport_passes():
-    state = addon().viewport.last_state
+    state = addon().host.viewport.last_state
     return state.counters.passes if state else 0
 
 
@@ -360,7 +360,7 @@ def toon_shots():
     scene, mat = toon_scene()
     show_scene(scene)
     s = mat.edgelight
-    ramp = addon().color_ramp
+    ramp = addon().extract.color_ramp
     modes = (
         ("toon_phong", "Blinn-Phong", dict(shading='PHONG')),
         ("toon_ramp", "Toon Ramp (Constant)", dict(shading='RAMP')),
@@ -437,10 +437,10 @@ def compositor_shots():
     scene = compositor_scene()
     window().scene = scene
     el = addon()
-    el.engine.capture = True
-    el.engine.last_render.clear()
+    el.host.engine.capture = True
+    el.host.engine.last_render.clear()
     bpy.ops.render.render()
-    rec = el.engine.last_render
+    rec = el.host.engine.last_render
     passes = dict(rec.get("passes", {}), Combined=rec.get("pixels"))
     for name, data in passes.items():
         if data is not None:
@@ -518,7 +518,7 @@ def clamp_note_shot():
     props.spaces.active.context = 'MATERIAL'
     props.tag_redraw()
     yield 1.0
-    note = addon().ui.radius_clamp_note(mat, scene)
+    note = addon().host.ui.radius_clamp_note(mat, scene)
     win_h = window().height
     box = [props.x, win_h - (props.y + props.height), props.x + props.width, win_h - props.y]
     shot("clamp_note", "The material panel when the faces allow less than the Radius", box=box)
@@ -538,7 +538,7 @@ def steps():
 
 
 def run():
-    addon().engine.capture = True  # the viewport's counters and the render's passes are read here
+    addon().host.engine.capture = True  # the viewport's counters and the render's passes are read here
     ui_session.run(steps, "docs session")
 
 

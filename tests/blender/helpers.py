@@ -73,7 +73,7 @@ def render(resolution=None, expect_error=False):
     if resolution:
         scene.render.resolution_x, scene.render.resolution_y = resolution
         scene.render.resolution_percentage = 100
-    engine = addon().engine
+    engine = addon().host.engine
     engine.capture = True
     engine.last_render.clear()
     try:
@@ -81,10 +81,10 @@ def render(resolution=None, expect_error=False):
     except RuntimeError as e:
         if not expect_error:
             raise
-        return dict(addon().engine.last_render, raised=str(e))
+        return dict(addon().host.engine.last_render, raised=str(e))
     if expect_error:
         raise AssertionError("the render reported no error")
-    return dict(addon().engine.last_render)
+    return dict(addon().host.engine.last_render)
 
 
 def project(rec, points):
@@ -113,7 +113,7 @@ def world_on_arc(inp, eye_at_x, shading, ambient):
     colour and the tinted lobe's albedo at the arc's mean cosine to the eye (the reference's
     diffuse mean with the eye as the light). `inp`: the pixel's native.HighlightInput;
     `eye_at_x`: the direction from its point to the eye."""
-    native = addon().native
+    native = addon().bridge.native
     light = list(inp.light)
     v = np.asarray(eye_at_x, np.float64)
     inp.light[:] = (v / np.linalg.norm(v)).tolist()
@@ -241,10 +241,10 @@ def line_samples(rec, per_px=1, whole_segments=False):
     segment, shown: whether line_visibility's rule draws the stroke there, a crease past a
     rounded outline counted as not shown)."""
     a = addon()
-    vl, vis = a.vector_lines, a.line_visibility
+    vl, vis = a.linework.vector_lines, a.linework.line_visibility
     cam, vec = rec["camera"], rec["vector"]
     h, w = rec["lines"].shape[:2]
-    settings = a.lines.settings_of(bpy.context.scene.edgelight)
+    settings = a.linework.lines.settings_of(bpy.context.scene.edgelight)
     styles = dict(settings.styles)
     for matrix, segs, iid in vl.instances_of(rec["scene"], vec.view_segments):
         for kind in settings.types:

@@ -33,7 +33,7 @@ if do_render == "1":
     scene = bpy.context.scene
     scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = 64, 48, 100
     scene.edgelight.samples = 1
-    mod.engine.capture = True  # keep the render's record for this check
+    mod.host.engine.capture = True  # keep the render's record for this check
     bpy.ops.render.render()
-    record = mod.engine.last_render
+    record = mod.host.engine.last_render
     print("EDGELIGHT_RENDERED", record["stats"].edges_drawn, record["pixels"].shape, flush=True)

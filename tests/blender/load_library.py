@@ -12,7 +12,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import helpers  # noqa: E402
 
-native = helpers.addon().native
+native = helpers.addon().bridge.native
 for i, path in enumerate(sys.argv[sys.argv.index("--") + 1:]):
     try:
         native.load(path)

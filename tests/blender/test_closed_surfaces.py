@@ -1,4 +1,4 @@
-"""A closed surface's back faces are culled where they cannot show (addon/closed_surfaces.py):
+"""A closed surface's back faces are culled where they cannot show (addon/geometry/closed_surfaces.py):
 through the rounded outline's strips they showed the part's inside, a cylinder's cap along its
 silhouette. Where the eye is inside the surface, its walls still show; a mirrored instance and a
 file whose faces are wound either way render as before."""

@@ -1,4 +1,4 @@
-"""Corner patches (addon/corner_patches.py, shaders/edge_corner.*): where three rounded edges of a
+"""Corner patches (addon/geometry/corner_patches.py, shaders/edge_corner.*): where three rounded edges of a
 box meet, the image against true fillets (bench/fillets.py: the Bevel modifier at the same radius,
 32 segments, whose corners are the rolling ball's patch), and a hidden corner's patch stays
 hidden behind a plate in front of it."""

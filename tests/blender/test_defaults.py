@@ -58,7 +58,7 @@ class OldFilesKeepTheirLook(unittest.TestCase):
         for name in ("Stepped", "Smooth", "NoStops"):
             group = bpy.data.materials[name].edgelight
             self.assertAlmostEqual(group.radius, 0.01, 6, name)
-            self.assertEqual(group.get("settings_version"), helpers.addon().properties.SETTINGS_VERSION)
+            self.assertEqual(group.get("settings_version"), helpers.addon().host.properties.SETTINGS_VERSION)
         self.assertAlmostEqual(bpy.data.materials["Cube"].edgelight.radius, 0.02, 6, "a stored radius stays")
 
     def saved_untouched(self, stamped):
@@ -77,7 +77,7 @@ class OldFilesKeepTheirLook(unittest.TestCase):
 
     def save_without_stamps(self, path):
         """Saves as an older add-on (or an autosave, which runs no save handler) would."""
-        versioning = helpers.addon().versioning
+        versioning = helpers.addon().host.versioning
         bpy.app.handlers.save_pre.remove(versioning._save_pre)
         try:
             bpy.ops.wm.save_as_mainfile(filepath=path)

@@ -18,7 +18,7 @@ def unit(a):
 
 class FilletOutline(unittest.TestCase):
     def test_the_librarys_copy_matches_the_shader(self):
-        fillet_outline = importlib.import_module(helpers.MODULE + ".native").fillet_outline
+        fillet_outline = importlib.import_module(helpers.MODULE + ".bridge.native").fillet_outline
         rng = np.random.default_rng(11)
         na, nb, v = (unit(rng.normal(size=(6000, 3))) for _ in range(3))
         # Clear of the rule's boundaries, where float32 and float64 may judge a face either way:

@@ -156,7 +156,7 @@ def spill(rec, margin=2):
 
 
 class BandEnds(unittest.TestCase):
-    """Bands end on their faces (addon/band_ends.py: cuts through the end vertices, mitres where
+    """Bands end on their faces (addon/geometry/band_ends.py: cuts through the end vertices, mitres where
     rounded edges meet) and never show past the part's outline (the id image's fringe)."""
 
     def part_at(self, build, camera, width_px):

@@ -26,7 +26,7 @@ WRITE = "gl_FragDepth = 1.0 - alpha;"
 def line_variant(replace):
     """A folder with line.frag.glsl changed by `replace` (text -> text), for shader_lib's
     use_variant; the caller removes it."""
-    specs = helpers.addon().passes.shader_specs
+    specs = helpers.addon().bridge.shader_specs
     with open(os.path.join(specs.shader_dir(), "line.frag.glsl"), encoding="utf-8") as f:
         text = f.read()
     changed = replace(text)
@@ -45,7 +45,7 @@ class variant:
 
     def __enter__(self):
         a = helpers.addon()
-        a.passes.shader_lib.use_variant("line", a.passes.shader_specs.program("line"), self.folder)
+        a.passes.shader_lib.use_variant("line", a.bridge.shader_specs.program("line"), self.folder)
 
     def __exit__(self, *exc):
         helpers.addon().passes.shader_lib.use_variant("line")

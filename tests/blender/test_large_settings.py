@@ -30,7 +30,7 @@ class HighlightStrength(unittest.TestCase):
         mat = bpy.data.materials.new("Linked")
         mat.edgelight["K"] = 2.5
         self.assertAlmostEqual(mat.edgelight.K, 2.5, places=6)
-        self.assertEqual(helpers.addon().materials.shading_of(mat).K, 1.0)
+        self.assertEqual(helpers.addon().extract.materials.shading_of(mat).K, 1.0)
 
     def layout3_group(self, k, radius=None):
         mat = bpy.data.materials.new("Old")
@@ -42,12 +42,12 @@ class HighlightStrength(unittest.TestCase):
         return group
 
     def test_layout_3_strength_moves_into_the_radius(self):
-        versioning = helpers.addon().versioning
+        versioning = helpers.addon().host.versioning
         group = self.layout3_group(2.5, 0.02)
         self.assertEqual(versioning.upgrade(group, "material"), 3)
         self.assertAlmostEqual(group.K, 1.0, places=6)
         self.assertAlmostEqual(group.radius, 0.05, places=6)
-        self.assertEqual(group.get("settings_version"), helpers.addon().properties.SETTINGS_VERSION)
+        self.assertEqual(group.get("settings_version"), helpers.addon().host.properties.SETTINGS_VERSION)
         # The default radius (not stored) is the one multiplied.
         group = self.layout3_group(3.0)
         versioning.upgrade(group, "material")
@@ -74,71 +74,105 @@ def cube_scene(radius, size=2.0):
 def extract():
     """What a render extracts (scene_sync.collect): no GPU needed."""
     el = helpers.addon()
-    lib, error = el.engine.load_library()
+    lib, error = el.host.engine.load_library()
     if lib is None:
         raise AssertionError(f"native library: {error}")
-    return el.scene_sync.collect(bpy.context.evaluated_depsgraph_get(), lib=lib)
+    return el.extract.scene_sync.collect(bpy.context.evaluated_depsgraph_get(), lib=lib)
+
+
+def notes():
+    """What the material panel's note reads (host/clamp_notes.py)."""
+    return helpers.addon().host.clamp_notes.NOTES
+
+
+def rendered():
+    """A render's extraction, handed to the notes as the engine hands it."""
+    data = extract()
+    notes().rendered(inst.mesh for inst in data.instances)
+    return data
 
 
 class RadiusClampNote(unittest.TestCase):
+    def setUp(self):
+        notes().clear()
+
     def test_clamped_edges_are_counted_for_the_panel(self):
         el = helpers.addon()
         mat = cube_scene(5.0)
         before = {k: mat.edgelight.get(k) for k in mat.edgelight.keys()}
-        data = extract()
-        clamped, rounded, smallest = el.materials.radius_clamps(mat)
+        data = rendered()
+        self.assertEqual(len(data.instances[0].mesh.clamps), 1, "one material's counts")
+        clamped, rounded, smallest = notes().radius_clamps(mat)
         self.assertEqual((clamped, rounded), (12, 12), "every edge of the 2 m cube")
         self.assertAlmostEqual(smallest, 1.0, places=5, msg="its faces allow 1 m")
-        note = el.ui.radius_clamp_note(mat, bpy.context.scene)
+        note = el.host.ui.radius_clamp_note(mat, bpy.context.scene)
         self.assertEqual(len(note), 2)
         self.assertEqual(note[0], "12 of 12 edges clamped")
         self.assertIn("1 m", note[1])
         self.assertEqual({k: mat.edgelight.get(k) for k in mat.edgelight.keys()}, before, "nothing written to the material")
         # Another radius: unknown until the edges are picked again, then counted anew.
         mat.edgelight.radius = 0.5
-        self.assertIsNone(el.materials.radius_clamps(mat))
-        self.assertEqual(el.ui.radius_clamp_note(mat, bpy.context.scene), ())
+        self.assertIsNone(notes().radius_clamps(mat))
+        self.assertEqual(el.host.ui.radius_clamp_note(mat, bpy.context.scene), ())
         del data
         gc.collect()
-        data = extract()
-        self.assertEqual(el.materials.radius_clamps(mat), (0, 12, math.inf))
-        self.assertEqual(el.ui.radius_clamp_note(mat, bpy.context.scene), (), "no note when nothing is clamped")
+        data = rendered()
+        self.assertEqual(notes().radius_clamps(mat), (0, 12, math.inf))
+        self.assertEqual(el.host.ui.radius_clamp_note(mat, bpy.context.scene), (), "no note when nothing is clamped")
         del data
+
+    def test_extraction_itself_records_nothing(self):
+        """The edge choice returns its counts with the extraction; only their owners (the
+        engine, the viewport) hand them to the notes."""
+        mat = cube_scene(5.0)
+        data = extract()
+        self.assertIsNone(notes().radius_clamps(mat))
+        self.assertEqual((data.instances[0].mesh.clamps[0].clamped, data.instances[0].mesh.clamps[0].rounded), (12, 12))
 
     def test_each_material_counts_its_own_edges(self):
         """A 2 m cube at radius 5 with its top face of another material at radius 0.5: the top's
         4 edges take the smaller radius (0.5, within the 1 m its faces allow), so only the 8
         others are clamped, and they are the first material's alone."""
-        el = helpers.addon()
         mat = cube_scene(5.0)
         cube = bpy.data.objects["Cube"]
         top = zoo.material("Top", (0.8, 0.3, 0.2))
         top.edgelight.radius = 0.5
         cube.data.materials.append(top)
         cube.data.polygons[5].material_index = 1  # scene_zoo.box: face 5 is +z
-        data = extract()
-        self.assertEqual(el.materials.radius_clamps(mat)[:2], (8, 12))
-        self.assertEqual(el.materials.radius_clamps(top), (0, 4, math.inf))
+        data = rendered()
+        self.assertEqual(notes().radius_clamps(mat)[:2], (8, 12))
+        self.assertEqual(notes().radius_clamps(top), (0, 4, math.inf))
         del data
 
     def test_the_last_render_is_kept_and_only_held_geometry_counts(self):
-        el = helpers.addon()
         mat = cube_scene(5.0)
-        extract()  # freed at once, as a final render's extraction: still what the panel shows
+        rendered()  # freed at once, as a final render's extraction: still what the panel shows
         gc.collect()
-        self.assertEqual(el.materials.radius_clamps(mat)[:2], (12, 12))
-        # A geometry the viewport holds replaces what earlier, freed extractions counted (a
-        # mesh edited in the Rendered viewport is extracted anew: no double counting).
-        held = [extract() for _ in range(2)]
-        self.assertEqual(el.materials.radius_clamps(mat)[:2], (24, 24), "two held geometries")
+        self.assertEqual(notes().radius_clamps(mat)[:2], (12, 12))
+        # A geometry the viewport holds replaces what the last render counted (a mesh edited
+        # in the Rendered viewport is extracted anew: no double counting).
+        held = [extract().instances[0].mesh for _ in range(2)]
+        notes().hold(held[0])
+        notes().hold(held[1])
+        self.assertEqual(notes().radius_clamps(mat)[:2], (24, 24), "two held geometries")
+        notes().hold(held[0])  # held again (its edges chosen again): counted once
+        self.assertEqual(notes().radius_clamps(mat)[:2], (24, 24))
         held.pop()
         gc.collect()
-        self.assertEqual(el.materials.radius_clamps(mat)[:2], (12, 12))
-        del held
+        self.assertEqual(notes().radius_clamps(mat)[:2], (12, 12))
+        held.pop()
+        gc.collect()
+        self.assertEqual(notes().radius_clamps(mat)[:2], (12, 12), "none held: the last render's again")
+
+    def test_a_final_render_counts_for_the_note(self):
+        helpers.needs_gpu()
+        mat = cube_scene(5.0)
+        helpers.render()
+        self.assertEqual(notes().radius_clamps(mat)[:2], (12, 12))
 
     def test_the_note_is_drawn_in_the_material_panel(self):
         mat = cube_scene(5.0)
-        data = extract()
+        data = rendered()
         labels = []
 
         class Layout:  # records what the panel draws
@@ -151,7 +185,7 @@ class RadiusClampNote(unittest.TestCase):
             def column(self, *args, **kwargs):
                 return self
 
-        panel = helpers.addon().ui.EDGELIGHT_PT_material
+        panel = helpers.addon().host.ui.EDGELIGHT_PT_material
         context = type("Context", (), {"material": mat, "scene": bpy.context.scene})()
         fake = type("Panel", (), {"layout": Layout()})()
         panel.draw(fake, context)

@@ -135,10 +135,10 @@ class Creases(unittest.TestCase):
         # face ids the visibility reads must still be each triangle's own.
         rec = self.render_cube(cuts=4)
         el = helpers.addon()
-        lib, error = el.engine.load_library()
+        lib, error = el.host.engine.load_library()
         self.assertIsNotNone(lib, error)
-        extract = el.scene_sync.collect(bpy.context.evaluated_depsgraph_get(), lib=lib).instances[0].mesh
-        listed = np.concatenate([np.any(rows > 0.0, axis=1) for rows in el.rounded_outline.records(extract)[2].values()])
+        extract = el.extract.scene_sync.collect(bpy.context.evaluated_depsgraph_get(), lib=lib).instances[0].mesh
+        listed = np.concatenate([np.any(rows > 0.0, axis=1) for rows in el.geometry.rounded_outline.records(extract)[2].values()])
         self.assertTrue(listed.any() and not listed.all(), "the faces drawn in two batches")
         vis, alpha = self.edge_alphas(rec)
         self.assertTrue((alpha[vis] > 0.99).all(), alpha[vis].min(axis=1))

@@ -30,7 +30,7 @@ def warnings(rec, text):
 
 class MaterialInputs(unittest.TestCase):
     def inputs(self):
-        return helpers.addon().material_inputs
+        return helpers.addon().extract.material_inputs
 
     def test_plain_principled_says_nothing(self):
         scene()
@@ -38,7 +38,7 @@ class MaterialInputs(unittest.TestCase):
         mat.use_nodes = True
         node, unread = self.inputs().principled_of(mat)
         self.assertEqual(node.type, 'BSDF_PRINCIPLED')
-        self.assertEqual(unread + helpers.addon().materials.unread_inputs(node), [])
+        self.assertEqual(unread + helpers.addon().extract.materials.unread_inputs(node), [])
         assign(mat)
         self.assertEqual(warnings(helpers.render(), "does not draw"), [])
 
@@ -60,7 +60,7 @@ class MaterialInputs(unittest.TestCase):
         # (test_emission.py) are drawn: nothing is said of them (the boxes have no UV map, and
         # that is said).
         self.assertEqual(warnings(helpers.render(), "does not draw"), [])
-        self.assertEqual(helpers.addon().materials.unread_inputs(node), [])
+        self.assertEqual(helpers.addon().extract.materials.unread_inputs(node), [])
         # Through a node EdgeLight does not evaluate, the image is not drawn, and that is said.
         curves = tree.nodes.new("ShaderNodeRGBCurve")
         tree.links.new(tex.outputs["Color"], curves.inputs["Color"])
@@ -74,7 +74,7 @@ class MaterialInputs(unittest.TestCase):
         self.assertIn("Base Color from RGB Curves", lines[0])
         self.assertIn("its value (0.5, 0.4, 0.3) is drawn", lines[0])
         self.assertIn("Emission Strength from Image Texture 'Mask': no image (no emission is drawn)", lines[0])
-        unread = helpers.addon().materials.unread_inputs(node)
+        unread = helpers.addon().extract.materials.unread_inputs(node)
         self.assertEqual(self.inputs().panel_line(unread), "Not drawn: Base Color: RGB Curves, Emission Strength: Image Texture")
 
     def test_other_surface_shader_is_named_and_the_render_goes_on(self):
@@ -99,7 +99,7 @@ class MaterialInputs(unittest.TestCase):
         mat.use_nodes = True
         node = principled(mat)
         (node.inputs.get("Transmission Weight") or node.inputs["Transmission"]).default_value = 1.0
-        self.assertEqual([s for s, _ in helpers.addon().materials.unread_inputs(node)], ["Transmission"])
+        self.assertEqual([s for s, _ in helpers.addon().extract.materials.unread_inputs(node)], ["Transmission"])
 
     def test_world_texture_said(self):
         scene()

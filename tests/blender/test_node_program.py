@@ -277,16 +277,16 @@ class NodeChains(unittest.TestCase):
         # The GLSL against the add-on's Python ops, at each texel.
         # The lobe's albedo under the white world (helpers.env_specular): Specular 0 still
         # reflects at grazing angles, nearly nothing seen from above.
-        n = el.materials.shininess_from_roughness(0.5)
+        n = el.extract.materials.shininess_from_roughness(0.5)
         worst, albedo, negative = 0.0, np.zeros_like(ours), np.zeros(ours.shape[:2], bool)
         for k, (_ob, mats) in enumerate(pairs):
-            s = el.materials.shading_of(mats[0])
+            s = el.extract.materials.shading_of(mats[0])
             for t in range(4):
                 if s.texture is None:  # folded: the Shading's own albedo
                     albedo[k, t], f0 = s.base_color, np.array(s.spec_color)
                 else:
                     by_name = {"Texels": tuple(TEXELS[t]), "Texels2": tuple(TEXELS2[t])}
-                    got = el.node_program.run(s.texture.program, [by_name[i.image.name] for i in s.texture.program.images])
+                    got = el.extract.node_program.run(s.texture.program, [by_name[i.image.name] for i in s.texture.program.images])
                     m = min(max(got["Metallic"][0], 0.0), 1.0)
                     base = np.array(got["Base Color"][:3])
                     negative[k, t] = base.min() < 0.0
@@ -382,12 +382,12 @@ class ColorAttributes(unittest.TestCase):
         rec = helpers.render()
         self.assertEqual(warnings(rec), [])
         ours = centres(rec["pixels"], len(pairs))
-        n = el.materials.shininess_from_roughness(0.5)
+        n = el.extract.materials.shininess_from_roughness(0.5)
         albedo = np.zeros_like(ours)
         for k, (_ob, mats) in enumerate(pairs):
-            program = el.materials.shading_of(mats[0]).texture.program
+            program = el.extract.materials.shading_of(mats[0]).texture.program
             for t in range(4):
-                albedo[k, t] = np.maximum(el.node_program.run(program, tuple(TEXELS[t]), tuple(COLORS[t]))["Base Color"][:3], 0)
+                albedo[k, t] = np.maximum(el.extract.node_program.run(program, tuple(TEXELS[t]), tuple(COLORS[t]))["Base Color"][:3], 0)
                 want = albedo[k, t] + helpers.env_specular(np.zeros(3), n, 1.0)
                 np.testing.assert_allclose(ours[k, t], want, rtol=1e-3, atol=1e-4, err_msg=f"{ATTRIBUTE_CHAINS[k][0]} face {t}")
         np.testing.assert_allclose(albedo[0], COLORS[:, :3], atol=1e-6)  # the attribute itself
@@ -476,8 +476,8 @@ class PastWhatItCanDraw(unittest.TestCase):
         _scene, pairs = strips_scene([("overflow", lambda t, x: x.outputs["Color"], overflow)])
         rec = helpers.render()
         self.assertNotIn("ERROR", [level for level, _ in rec.get("messages", [])])
-        s = helpers.addon().materials.shading_of(pairs[0][1][0])
-        self.assertEqual(s.shininess, helpers.addon().materials.shininess_from_roughness(0.5))
+        s = helpers.addon().extract.materials.shading_of(pairs[0][1][0])
+        self.assertEqual(s.shininess, helpers.addon().extract.materials.shininess_from_roughness(0.5))
 
 
 class NormalMaps(unittest.TestCase):
@@ -627,9 +627,9 @@ class RoughnessPerPixel(unittest.TestCase):
         ours = centres(helpers.render()["pixels"], 1)[0]
         for t in range(4):
             base = np.clip(TEXELS[t, :3], 0.0, None)
-            n = el.materials.shininess_from_roughness(float(TEXELS[t, 1]))
+            n = el.extract.materials.shininess_from_roughness(float(TEXELS[t, 1]))
             want = helpers.env_specular(base, n, 1.0)
-            at_mean = helpers.env_specular(base, el.materials.shininess_from_roughness(float(TEXELS[:, 1].mean())), 1.0)
+            at_mean = helpers.env_specular(base, el.extract.materials.shininess_from_roughness(float(TEXELS[:, 1].mean())), 1.0)
             print(f"texel {t}: drawn {ours[t]}, at its roughness {want}, at the mean roughness {at_mean}")
             np.testing.assert_allclose(ours[t], want, rtol=1e-3, atol=1e-4)
 

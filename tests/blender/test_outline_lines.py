@@ -1,4 +1,4 @@
-"""Silhouette lines on the rounded outline (addon/outline_lines.py, docs/lines.md): with the
+"""Silhouette lines on the rounded outline (addon/geometry/outline_lines.py, docs/lines.md): with the
 highlights on, the surface pass pulls a rounded silhouette's outline in to the fillet's, and the
 silhouette's ink follows it there; a crease along that edge does not trace the sharp edge past
 the part, nor widen the outline's stroke where it overlaps it. Against the exact fillets' outline, row by row across a box's left and right sides."""
@@ -193,8 +193,8 @@ class SilhouetteLines(unittest.TestCase):
         """Should moving an object's silhouettes fail (the library refusing el_outline_lines),
         the render goes on: that object's silhouettes stay on its sharp edges, and a report names
         it."""
-        outline_lines = importlib.import_module(helpers.MODULE + ".outline_lines")
-        native = importlib.import_module(helpers.MODULE + ".native")
+        outline_lines = importlib.import_module(helpers.MODULE + ".geometry.outline_lines")
+        native = importlib.import_module(helpers.MODULE + ".bridge.native")
         ref = box(8.0, "fillets")[..., 3]
         rows = np.arange(94, 150, 4)
         outline = sides(ref, rows)
@@ -222,7 +222,7 @@ class SilhouetteLines(unittest.TestCase):
         outline; each side ends at the fillet's foot and a segment from there meets the rim's
         moved end (left on the sharp vertex, the side's stroke ran on past the moved rim).
         Every silhouette end's image meets another's."""
-        lines = importlib.import_module(helpers.MODULE + ".lines")
+        lines = importlib.import_module(helpers.MODULE + ".linework.lines")
         helpers.empty_scene(*RESOLUTION, samples=1)
         helpers.add_camera((2.2, -3.0, 2.6))
         helpers.add_sun((0.5, -0.8, 0.6), 4.0)

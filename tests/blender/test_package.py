@@ -31,7 +31,7 @@ class Contents(unittest.TestCase):
             manifest = z.read("edgelight/blender_manifest.toml").decode()
             init = z.read("edgelight/__init__.py").decode()
         self.assertEqual({n.split("/")[0] for n in names}, {"edgelight"})
-        for name in ("__init__.py", "versioning.py", "compat.py", "libedgelight.so",
+        for name in ("__init__.py", "host/versioning.py", "compat.py", "libedgelight.so",
                      "shaders/programs.json", "passes/frame.py"):
             self.assertIn("edgelight/" + name, names)
         self.assertFalse([n for n in names if "__pycache__" in n or n.endswith(".pyc")])
@@ -57,10 +57,10 @@ class Contents(unittest.TestCase):
         self.assertEqual(mod.__name__, helpers.MODULE)
         self.assertTrue(os.path.isfile(os.path.join(here, "blender_manifest.toml")))
         # The library is found beside the add-on (EDGELIGHT_LIBRARY overrides only in tests).
-        self.assertEqual(mod.native.default_library_path(), os.path.join(here, "libedgelight.so"))
-        self.assertEqual(mod.native.load().path, os.path.join(here, "libedgelight.so"))
+        self.assertEqual(mod.bridge.native.default_library_path(), os.path.join(here, "libedgelight.so"))
+        self.assertEqual(mod.bridge.native.load().path, os.path.join(here, "libedgelight.so"))
         # Installed with its record, so the full check (size and SHA-256) applies.
-        self.assertEqual(mod.library_check.check(os.path.join(here, "libedgelight.so")), "record")
+        self.assertEqual(mod.bridge.library_check.check(os.path.join(here, "libedgelight.so")), "record")
 
 
 class Validates(unittest.TestCase):

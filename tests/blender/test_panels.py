@@ -49,18 +49,18 @@ class Panels(unittest.TestCase):
     def test_material_settings_come_before_the_surface(self):
         # Panels of one tab show in the order they were registered: EdgeLight's settings first,
         # then the Principled inputs (Blender's own drawing), which fill several screens.
-        ui = helpers.addon().ui
+        ui = helpers.addon().host.ui
         order = [cls.__name__ for cls in ui.CLASSES if getattr(cls, "bl_context", "") == "material"]
         self.assertLess(order.index("EDGELIGHT_PT_material"), order.index("EDGELIGHT_PT_material_surface"))
         self.assertIn('EDGELIGHT', ui.EDGELIGHT_PT_material_surface.COMPAT_ENGINES)
 
     def test_edgelight_light_panel_replaces_eevee_s(self):
-        panel = helpers.addon().ui_light.EDGELIGHT_PT_light
+        panel = helpers.addon().host.ui_light.EDGELIGHT_PT_light
         self.assertEqual(panel.bl_context, "data")
         self.assertTrue(hasattr(bpy.types, "EDGELIGHT_PT_light"))
 
     def test_unregister_removes_edgelight(self):
-        ui = helpers.addon().ui
+        ui = helpers.addon().host.ui
         ui.unregister()
         try:
             for name in SHOWN:

@@ -1,4 +1,4 @@
-"""The viewport's and the rounded outline's numpy copy of el_radius_scale (addon/radius_scale.py)
+"""The viewport's and the rounded outline's numpy copy of el_radius_scale (addon/geometry/radius_scale.py)
 against the shader's own function, evaluated on the GPU (glsl_eval): under uniform, non-uniform,
 sheared and mirrored transforms, and for faces with no direction across the edge (the fallback
 to the unit diagonal's stretch)."""
@@ -32,7 +32,7 @@ def cases(rng, count):
 
 class RadiusScale(unittest.TestCase):
     def test_numpy_copy_matches_the_shader(self):
-        radius_scale = importlib.import_module(helpers.MODULE + ".radius_scale").radius_scale
+        radius_scale = importlib.import_module(helpers.MODULE + ".geometry.radius_scale").radius_scale
         m, na, nb, e, along = cases(np.random.default_rng(7), 4000)
         glsl = glsl_eval.evaluate(glsl_eval.function_source("lighting.glsl", "el_radius_scale"),
                                   "el_radius_scale(mat4(m0, m1, m2, m3), na, nb, e), 0.0, 0.0, 0.0",

@@ -33,7 +33,7 @@ def blinn_norm(n):
 
 class ShaderMatchesReference(unittest.TestCase):
     def test_highlight_colour_and_weight(self):
-        native = helpers.addon().native
+        native = helpers.addon().bridge.native
         helpers.open_sample("cube")
         mat = bpy.data.materials["Cube"]
         mat.edgelight.radius = 0.05  # a few pixels wide: many pixels to compare
@@ -90,7 +90,7 @@ class ShaderMatchesReference(unittest.TestCase):
 class ShortEdgesMatchReference(unittest.TestCase):
     def test_edges_under_16_px_carry_the_midpoint_colour(self):
         """Short edges are shaded once in the vertex shader, at their midpoint."""
-        native = helpers.addon().native
+        native = helpers.addon().bridge.native
         helpers.open_sample("cube")
         bpy.data.materials["Cube"].edgelight.radius = 0.2  # wide enough to cover whole pixels
         rec = render_whole_arc((48, 36))

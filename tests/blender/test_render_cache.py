@@ -1,4 +1,4 @@
-"""Extractions kept between final renders (addon/render_cache.py): within a render job (an
+"""Extractions kept between final renders (addon/extract/render_cache.py): within a render job (an
 animation) and, with the scene's Persistent Data on, from one job to the next. A render of
 unchanged meshes reuses the last render's classification and draws the same image; an edited
 mesh, a changed material or line settings are read afresh, and the image is the one a render
@@ -14,7 +14,7 @@ import scene_zoo as zoo
 
 
 def cache():
-    return helpers.addon().render_cache.EXTRACTS
+    return helpers.addon().extract.render_cache.EXTRACTS
 
 
 def scene_with_box(persistent=True):
@@ -57,7 +57,7 @@ class RenderCache(unittest.TestCase):
         from the chosen edges: a reused extraction does not compute them again, a radius change
         (edges chosen again) does, and the image is the one a render from nothing draws."""
         box = scene_with_box()
-        outline = helpers.addon().rounded_outline
+        outline = helpers.addon().geometry.rounded_outline
         calls, records = [], outline.records
 
         def counted(extract):

@@ -225,7 +225,7 @@ class RenderRegion(unittest.TestCase):
         helpers.only_lines(scene, silhouette=2.0, crease=2.0, contour=2.0)
         scene.edgelight.highlights = True
         full = helpers.render()["pixels"]
-        self.assertGreater(np.asarray(helpers.addon().engine.last_render["lines"])[..., 3].sum(), 500.0)
+        self.assertGreater(np.asarray(helpers.addon().host.engine.last_render["lines"])[..., 3].sum(), 500.0)
         r = scene.render
         r.use_border, r.use_crop_to_border = True, True
         stitched = np.zeros_like(full)
@@ -287,7 +287,7 @@ class CameraTransforms(unittest.TestCase):
             scene.render.image_settings.color_mode = 'RGBA'
             with tempfile.TemporaryDirectory() as tmp:
                 r.filepath = os.path.join(tmp, "frame")
-                helpers.addon().engine.capture = True
+                helpers.addon().host.engine.capture = True
                 bpy.ops.render.render(write_still=True)
                 self.assertEqual(sorted(os.listdir(tmp)), ["frame_L.png", "frame_R.png"])
                 masks[engine] = [saved_alpha(os.path.join(tmp, f"frame_{eye}.png")) > 0.5 for eye in "LR"]
@@ -454,7 +454,7 @@ class Memory(unittest.TestCase):
         helpers.open_sample("cube")
         r = bpy.context.scene.render
         r.resolution_x, r.resolution_y, r.resolution_percentage = 3840, 2160, 100
-        engine = helpers.addon().engine
+        engine = helpers.addon().host.engine
         engine.capture = False
         try:
             bpy.ops.render.render()

@@ -289,7 +289,7 @@ class ObjectIndex(unittest.TestCase):
         return scene
 
     def name(self):
-        return helpers.addon().render_passes.OBJECT_INDEX
+        return helpers.addon().host.render_passes.OBJECT_INDEX
 
     def check_values(self, rec, index):
         self.assertEqual(index.shape, (160, 240, 1))
@@ -367,7 +367,7 @@ class MaterialIndex(unittest.TestCase):
         helpers.needs_gpu()
         self.scene()
         rec = helpers.render()
-        names = helpers.addon().render_passes
+        names = helpers.addon().host.render_passes
         index = rec["passes"][names.MATERIAL_INDEX]
         self.assertEqual(index.shape, (160, 240, 1))
         seen_from_top = {4.0: (-3.5, 0.2, 0.75), 6.0: (0.3, -0.2, 0.75), 0.0: (3.5, 0.0, 0.75)}
@@ -387,7 +387,7 @@ class MaterialIndex(unittest.TestCase):
         cam.data.type = 'PERSP'
         helpers.look_at(cam, (-3.5, -8.0, 0.0), (-3.5, 0.0, 0.0))  # the front face: A's slot 0
         rec = helpers.render()
-        index = rec["passes"][helpers.addon().render_passes.MATERIAL_INDEX]
+        index = rec["passes"][helpers.addon().host.render_passes.MATERIAL_INDEX]
         x, y = np.floor(helpers.project(rec, [(-3.5, -0.75, 0.0)])[0]).astype(int)
         self.assertEqual(index[y, x, 0], 2.0)
 
@@ -395,7 +395,7 @@ class MaterialIndex(unittest.TestCase):
         scene = self.scene()
         tree, _ = compositor(scene)
         node = tree.nodes.new("CompositorNodeRLayers")
-        name = helpers.addon().render_passes.MATERIAL_INDEX
+        name = helpers.addon().host.render_passes.MATERIAL_INDEX
         self.assertIn(name, {o.name for o in node.outputs if o.enabled})
         scene.render.engine = 'CYCLES'  # the name Cycles registers
         scene.view_layers[0].update_render_passes()

@@ -286,7 +286,7 @@ class SettingsSurviveSaveAndReload(unittest.TestCase):
         sc.line_silhouette.color = (0.1, 0.2, 0.3)
         m = bpy.data.materials["Cube"].edgelight
         m.shading, m.xtoon_axis, m.xtoon_far = 'RAMP', 'ORIENTATION', 33.0
-        color_ramp = helpers.addon().color_ramp
+        color_ramp = helpers.addon().extract.color_ramp
         m.shade_ramp = color_ramp.new_ramp([(pos, (pos, 0.5, 1.0 - pos)) for pos in (0.0, 0.4, 0.8)], 'LINEAR')
         path = os.path.join(tempfile.mkdtemp(), "lines.blend")
         bpy.ops.wm.save_as_mainfile(filepath=path)

@@ -10,7 +10,7 @@ import helpers
 
 
 def groups():
-    props = helpers.addon().properties
+    props = helpers.addon().host.properties
     return (props.EdgeLightMaterialSettings, props.EdgeLightSceneSettings, *props.LINE_STYLES)
 
 
@@ -48,7 +48,7 @@ class WidthUnits(unittest.TestCase):
 
     def test_switching_unit_converts_the_width(self):
         scene, st = self.scene()
-        units = helpers.addon().line_units
+        units = helpers.addon().host.line_units
         ppu = units.pixels_per_unit(scene)
         # 50 mm on a 36 mm sensor, 400 px wide, the plane 5 units away: 400 * 50 / 36 / 5.
         self.assertAlmostEqual(ppu, 400 * 50 / 36 / 5, delta=0.01)

@@ -106,7 +106,7 @@ class Document(unittest.TestCase):
         scene.frame_current = 7
         out = tempfile.mkdtemp(prefix="edgelight_svg_")
         scene.render.filepath = os.path.join(out, "shot_")
-        helpers.addon().engine.capture = True
+        helpers.addon().host.engine.capture = True
         bpy.ops.render.render(write_still=True)
         self.assertEqual(sorted(os.listdir(out)), ["shot_.png", "shot_.svg"])
 
@@ -120,7 +120,7 @@ class Document(unittest.TestCase):
         out = tempfile.mkdtemp(prefix="edgelight_svg_")
         scene.render.filepath = os.path.join(out, "shot_")
         os.mkdir(os.path.join(out, "shot_.svg"))
-        engine = helpers.addon().engine
+        engine = helpers.addon().host.engine
         engine.capture = True
         engine.last_render.clear()
         bpy.ops.render.render(write_still=True)
@@ -133,11 +133,26 @@ class Document(unittest.TestCase):
         helpers.needs_gpu()
         scene = helpers.open_sample("cube")
         scene.edgelight.use_lines = True
-        path = os.path.join(tempfile.mkdtemp(prefix="edgelight_svg_"), "export.svg")
-        helpers.addon().engine.capture = True
+        # A second view layer without the cube: the export draws the current layer only.
+        parts = bpy.data.collections.new("Parts")
+        scene.collection.children.link(parts)
+        cube = bpy.data.objects["Cube"]
+        parts.objects.link(cube)
+        scene.collection.objects.unlink(cube)
+        scene.view_layers.new("Second").layer_collection.children["Parts"].exclude = True
+        folder = tempfile.mkdtemp(prefix="edgelight_svg_")
+        path = os.path.join(folder, "export.svg")
+        helpers.addon().host.engine.capture = True
         bpy.ops.edgelight.export_svg(filepath=path)
         self.assertEqual(ET.parse(path).getroot().tag, f"{{{SVG_NS}}}svg")
+        self.assertEqual(os.listdir(folder), ["export.svg"])
+        self.assertGreater(len(list(ET.parse(path).getroot().iter(f"{{{SVG_NS}}}polyline"))), 0, "the cube's lines")
         self.assertFalse(os.path.exists(scene.render.frame_path(frame=scene.frame_current)[:-4] + ".svg"))
+        # The request lasts for the export's render only: a render after it writes no SVG there.
+        self.assertEqual(bpy.context.window_manager.edgelight_svg_export.path, "")
+        os.remove(path)
+        bpy.ops.render.render()
+        self.assertEqual(os.listdir(folder), [])
 
 
     def test_blender_b_a_writes_one_svg_per_frame(self):
@@ -307,7 +322,7 @@ class Cleaning(unittest.TestCase):
     """Chaining and simplification on their own (no GPU)."""
 
     def test_collinear_runs_merge_and_simplify_stays_within_tolerance(self):
-        vl = helpers.addon().vector_lines
+        vl = helpers.addon().linework.vector_lines
         x = np.linspace(0.0, 100.0, 201)
         wave = np.c_[x, 0.1 * np.sin(x)]                     # within 0.25 px of a straight line
         self.assertEqual(len(vl.simplify(wave)), 2)
@@ -325,7 +340,7 @@ class Cleaning(unittest.TestCase):
         self.assertLess(len(kept), len(arc) // 4)
 
     def test_slivers_beside_an_earlier_stroke_go(self):
-        vl = helpers.addon().vector_lines
+        vl = helpers.addon().linework.vector_lines
         sil = vl.Stroke(False, 2.0, [np.array([[0.0, 0.0], [50.0, 0.0]])])
         beside = np.array([[10.0, 0.8], [11.0, 0.8]])      # 1 px, its ink touching the silhouette's
         apart = np.array([[10.0, 5.0], [11.0, 5.0]])       # 1 px, 5 px away: a crease of its own
@@ -359,7 +374,7 @@ class Cleaning(unittest.TestCase):
         self.assertLessEqual(len(lengths), 40)
 
     def test_chains_take_the_fewest_paths(self):
-        vl = helpers.addon().vector_lines
+        vl = helpers.addon().linework.vector_lines
         # A path of three runs (one given backwards), a closed triangle, and a T junction.
         a = np.array([[0, 0], [2, 0], [1, 0], [10, 0], [11, 0], [10, 1], [20, 0], [20, 5], [15, 0]], float)
         b = np.array([[1, 0], [3, 0], [2, 0], [11, 0], [10, 1], [10, 0], [20, 5], [20, 9], [20, 5]], float)

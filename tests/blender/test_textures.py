@@ -61,7 +61,7 @@ def quad_scene(interpolation='Closest', metallic=0.0, uv_map=None, between=None)
 def expected(albedo, spec, nv=1.0):
     """A surface under a uniform white world, no light: its albedo plus what the world puts in its
     specular lobe (lighting.glsl's el_env_specular, helpers.env_specular)."""
-    n = helpers.addon().materials.shininess_from_roughness(0.5)
+    n = helpers.addon().extract.materials.shininess_from_roughness(0.5)
     return np.asarray(albedo) + helpers.env_specular(spec, n, nv)
 
 

@@ -25,7 +25,7 @@ def toon_sphere(location=(0.0, 0.0, 0.0), name="Toon"):
 def set_ramp(mat, stops, smooth=False):
     s = mat.edgelight
     s.shading = 'RAMP'
-    s.shade_ramp = helpers.addon().color_ramp.new_ramp(stops, 'LINEAR' if smooth else 'CONSTANT')
+    s.shade_ramp = helpers.addon().extract.color_ramp.new_ramp(stops, 'LINEAR' if smooth else 'CONSTANT')
 
 
 def surface_colours(rec):
@@ -87,7 +87,7 @@ class RampData(unittest.TestCase):
 
     def test_ramp_leaves_the_material_tree_alone_and_copies_share_it(self):
         helpers.empty_scene()
-        color_ramp = helpers.addon().color_ramp
+        color_ramp = helpers.addon().extract.color_ramp
         mat = bpy.data.materials.new("Toon")
         mat.use_nodes = True
         nodes_before = sorted(n.name for n in mat.node_tree.nodes)

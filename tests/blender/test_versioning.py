@@ -16,7 +16,7 @@ LAYOUT1 = os.path.join(helpers.ROOT, "tests", "data", "settings_layout1.blend")
 
 
 def current_layout():
-    return helpers.addon().properties.SETTINGS_VERSION
+    return helpers.addon().host.properties.SETTINGS_VERSION
 
 
 class SampleIsLayout1(unittest.TestCase):
@@ -85,10 +85,10 @@ class RampStopsBecomeAColourRamp(unittest.TestCase):
         el = helpers.addon()
         for name, stops, interpolation in (("Stepped", STEPPED, 'CONSTANT'), ("Smooth", SMOOTH, 'LINEAR')):
             s = bpy.data.materials[name].edgelight
-            ramp = el.color_ramp.ramp_of(s)
+            ramp = el.extract.color_ramp.ramp_of(s)
             self.assertIsNotNone(ramp, name)
             self.assertEqual(ramp.interpolation, interpolation, name)
-            toon = el.materials.toon_of(s, (0.5, 0.5, 0.5))
+            toon = el.extract.materials.toon_of(s, (0.5, 0.5, 0.5))
             self.assertEqual(toon.smooth, interpolation == 'LINEAR')
             self.assertEqual(len(toon.ramp), len(stops))
             for (p, c), (want_p, want_c) in zip(toon.ramp, stops):
@@ -99,8 +99,8 @@ class RampStopsBecomeAColourRamp(unittest.TestCase):
             self.assertEqual(s.get("settings_version"), current_layout())
         none = bpy.data.materials["NoStops"]
         self.assertIsNone(none.edgelight.shade_ramp, "an empty list stays the default two bands")
-        base = el.materials.base_color_of(none)
-        self.assertEqual(el.materials.toon_of(none.edgelight, base).ramp, el.materials.default_ramp(base))
+        base = el.extract.materials.base_color_of(none)
+        self.assertEqual(el.extract.materials.toon_of(none.edgelight, base).ramp, el.extract.materials.default_ramp(base))
         self.assertIsNone(bpy.data.materials["Cube"].edgelight.shade_ramp)
 
     def test_upgraded_on_open(self):

@@ -34,7 +34,7 @@ def view3d():
 
 def counters():
     import edgelight
-    state = edgelight.viewport.last_state
+    state = edgelight.host.viewport.last_state
     return state.counters.as_dict() if state else {}
 
 
@@ -165,9 +165,9 @@ def panel_labels():
     "Render Engine" and a checkbox's text 1.5 times that less the box. Read from what the panels
     really laid out (UILayout.introspect) and measured in the UI's font."""
     import edgelight
-    from edgelight.panel_base import EdgeLightPanel
+    from edgelight.host.panel_base import EdgeLightPanel
     window, area, _ = properties_editor()
-    panels = [cls for cls in edgelight.ui.CLASSES if getattr(cls, "bl_context", None) in ("render", "material", "data")]
+    panels = [cls for cls in edgelight.host.ui.CLASSES if getattr(cls, "bl_context", None) in ("render", "material", "data")]
     texts, probes, polled = {}, [], set()
     # A registered panel's draw cannot be swapped (Blender holds the function): each panel is
     # drawn again by a probe panel of the same tab that calls its draw and reads the layout.
@@ -308,6 +308,10 @@ def steps():
     c6 = counters()
     check("material radius: no native call, only the edge and corner batches re-uploaded",
           c6["native_calls"] == c5["native_calls"] and c6["uploads"] - c5["uploads"] == 2, f"{c5['uploads']} -> {c6['uploads']}")
+    from edgelight.host.clamp_notes import NOTES as notes
+    held = notes.radius_clamps(mat)  # no final render at 0.05 yet: the view's own
+    check("material radius: the panel's clamp note counts the edges the view chose again",
+          held is not None and held[1] > 0, f"{held}")
 
     # 6. Ink lines: silhouettes are view-dependent (native view calls on a new view only),
     # creases static (rebuilt when their angle changes, with no mesh build).
@@ -353,7 +357,7 @@ def steps():
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     import edgelight
     import scene_zoo as zoo
-    state = edgelight.viewport.last_state
+    state = edgelight.host.viewport.last_state
     before_instances = len(state.instances)
 
     def studs(nodes, links, group_in):
@@ -484,12 +488,12 @@ def steps():
     # widget does) reaches the viewport through the material.
     mat = bpy.data.materials["Cube"]
     mat.edgelight.shading = 'RAMP'
-    mat.edgelight.shade_ramp = edgelight.color_ramp.new_ramp(((0.0, (0.1, 0.1, 0.3)), (0.5, (0.9, 0.8, 0.2))))
+    mat.edgelight.shade_ramp = edgelight.extract.color_ramp.new_ramp(((0.0, (0.1, 0.1, 0.3)), (0.5, (0.9, 0.8, 0.2))))
     yield 0.5
     redraw()
     yield 0.5
     c14 = counters()
-    element = edgelight.color_ramp.ramp_of(mat.edgelight).elements[1]
+    element = edgelight.extract.color_ramp.ramp_of(mat.edgelight).elements[1]
     element.color = (0.9, 0.2, 0.2, 1.0)
     bpy.msgbus.publish_rna(key=element.path_resolve("color", False))
     yield 0.5
@@ -615,16 +619,16 @@ def steps():
     # 10. A final render started from the UI as an artist would (a render job with its own GPU
     # context, not -b).
     import edgelight
-    edgelight.engine.capture = True
-    edgelight.engine.last_render.clear()
+    edgelight.host.engine.capture = True
+    edgelight.host.engine.last_render.clear()
     bpy.context.scene.edgelight.samples = 2
     with bpy.context.temp_override(window=window, area=area, region=region):
         bpy.ops.render.render('INVOKE_DEFAULT')
     for _ in range(120):
         yield 0.5
-        if "stats" in edgelight.engine.last_render and not bpy.app.is_job_running('RENDER'):
+        if "stats" in edgelight.host.engine.last_render and not bpy.app.is_job_running('RENDER'):
             break
-    rec = edgelight.engine.last_render
+    rec = edgelight.host.engine.last_render
     hl = rec.get("highlight")
     check("F12 from the UI completes with highlights", hl is not None and (hl[..., 3] > 0).sum() > 100,
           f"edges drawn {getattr(rec.get('stats'), 'edges_drawn', None)}")
@@ -636,7 +640,7 @@ def steps():
     # cancel are measured and printed, not required.
     import subprocess
     import time
-    edgelight.engine.last_render.clear()
+    edgelight.host.engine.last_render.clear()
     scene = bpy.context.scene
     yield from set_ints([("scene.edgelight.samples", 64), ("scene.render.resolution_x", 1920),
                          ("scene.render.resolution_y", 1080), ("scene.render.resolution_percentage", 100)])
@@ -649,10 +653,10 @@ def steps():
     for _ in range(1200):
         yield 0.1
         ticks.append(time.monotonic())
-        if "stats" in edgelight.engine.last_render and not bpy.app.is_job_running('RENDER'):
+        if "stats" in edgelight.host.engine.last_render and not bpy.app.is_job_running('RENDER'):
             break
     esc.wait(timeout=30)
-    rec = edgelight.engine.last_render
+    rec = edgelight.host.engine.last_render
     progress = rec.get("progress", [])
     done = [p[0] for p in progress]
     span = progress[-1][2] - progress[0][2] if progress else 0.0
@@ -713,16 +717,16 @@ def failed_render(window, area, region):
     saved = scene.render.resolution_x, scene.render.resolution_y, scene.edgelight.samples
     # One pixel wider than this GPU's textures (16384 on llvmpipe, 32768 on others).
     yield from settings_when_allowed(scene, (gpu.capabilities.max_texture_size_get() + 1, 64, 1))
-    edgelight.engine.last_render.clear()
+    edgelight.host.engine.last_render.clear()
     with bpy.context.temp_override(window=window, area=area, region=region):
         bpy.ops.render.render('INVOKE_DEFAULT')
     for _ in range(60):
         yield 0.5
-        if edgelight.engine.last_render and not bpy.app.is_job_running('RENDER'):
+        if edgelight.host.engine.last_render and not bpy.app.is_job_running('RENDER'):
             break
     yield 1.0
     yield from settings_when_allowed(scene, saved)
-    errors = [m for level, m in edgelight.engine.last_render.get("messages", []) if level == 'ERROR']
+    errors = [m for level, m in edgelight.host.engine.last_render.get("messages", []) if level == 'ERROR']
     windows = bpy.context.window_manager.windows
     render_win = next((w for w in windows if any(a.type == 'IMAGE_EDITOR' for a in w.screen.areas) and w != window), None)
     if render_win is None:
@@ -751,7 +755,7 @@ def failed_render(window, area, region):
 
 def run():
     import edgelight
-    edgelight.engine.capture = True  # keep the viewport state and renders for the counts read here
+    edgelight.host.engine.capture = True  # keep the viewport state and renders for the counts read here
     ui_session.run(steps, "viewport")
 
 

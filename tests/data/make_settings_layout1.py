@@ -1,5 +1,5 @@
 """Writes tests/data/settings_layout1.blend: EdgeLight settings in layout 1, as saved by the
-add-on before layout 2 renamed the material's `enabled` to `use_rounding` (addon/versioning.py).
+add-on before layout 2 renamed the material's `enabled` to `use_rounding` (addon/host/versioning.py).
 
 Run in Blender 3.4 (the oldest version of the matrix; every newer one reads its files) with the
 add-on of commit cc19a79, the last one with layout 1:

@@ -1,6 +1,6 @@
 """Writes tests/data/settings_layout2.blend: EdgeLight settings in layout 2, as saved by the
 add-on before layout 3 moved the toon shade ramp from a list of stops to a colour ramp
-(addon/versioning.py).
+(addon/host/versioning.py).
 
 Run in Blender 3.4 with the add-on of commit 33b1592, the last one with layout 2:
 

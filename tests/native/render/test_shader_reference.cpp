@@ -55,7 +55,7 @@ CubeScene cube(int width, int height, float radius) {
     auto& m = s.scene.material;
     m.base_color = {0.55f, 0.05f, 0.04f};
     m.spec_color = glm::vec3(0.04f);
-    m.shininess = float(2.0 / std::pow(0.3, 4.0) - 2.0);  // roughness 0.3 (addon/materials.py)
+    m.shininess = float(2.0 / std::pow(0.3, 4.0) - 2.0);  // roughness 0.3 (addon/extract/materials.py)
     m.radius = radius;
     return s;
 }

@@ -1,5 +1,5 @@
 // FrameData's layout as both hosts derive it from shaders/frame_data.json (native/tools/
-// typedef_spec.cpp here; addon/passes/shader_specs.py agrees with it, tests/addon) is the one the
+// typedef_spec.cpp here; addon/bridge/shader_specs.py agrees with it, tests/addon) is the one the
 // GL compiler gives the block: every member's offset and stride, and the block's size.
 #include "gl_objects.hpp"
 #include "offscreen_gl.hpp"

@@ -12,9 +12,9 @@ import functools
 import math
 from dataclasses import dataclass, field
 
+from ..bridge import shader_specs
 from . import material_inputs
 from .material_inputs import describe
-from .passes import shader_specs
 
 OP = shader_specs.enum("material_data.json", "EL_OP")
 MIX = shader_specs.enum("material_data.json", "EL_MIX")

@@ -247,10 +247,11 @@ _FUNCTIONS = {
 
 
 def default_library_path():
-    """EDGELIGHT_LIBRARY, else the platform's library beside this file (the packaged add-on's
-    layout: libedgelight.so, edgelight.dll or libedgelight.dylib, platforms.py)."""
-    return os.environ.get("EDGELIGHT_LIBRARY") or os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                                              platforms.library_file())
+    """EDGELIGHT_LIBRARY, else the platform's library at the package's root, beside its
+    __init__.py (the packaged add-on's layout: libedgelight.so, edgelight.dll or
+    libedgelight.dylib, platforms.py)."""
+    package = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    return os.environ.get("EDGELIGHT_LIBRARY") or os.path.join(package, platforms.library_file())
 
 
 class Library:

@@ -5,11 +5,10 @@ from dataclasses import dataclass, replace
 
 import bpy
 
-from . import color_ramp, compat, material_inputs, node_program, textures
+from .. import compat
+from ..bridge import shader_specs
+from . import color_ramp, material_inputs, node_program, textures
 from . import material_defaults as defaults
-from .passes import shader_specs
-from .properties import K_MAX
-from .radius_clamp_notes import radius_clamps  # noqa: F401 - the material panel's note (ui.py)
 
 DEFAULT_COLOR = (0.8, 0.8, 0.8)  # Principled BSDF's Base Color
 # The surface program's shading modes (shaders/surface_modes.json), keyed as the material's
@@ -197,7 +196,7 @@ def shading_of(material):
                     else ALPHA["NONE"])
     texture = (BaseTexture(image, program, f0, float(n) if s.use_custom_shininess else -1.0, alpha_mode, threshold,
                            shadow_alpha) if program is not None and program.outputs else None)
-    return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), K_MAX), float(s.radius),
+    return Shading(albedo, alpha, spec, float(n), bool(s.use_rounding), min(float(s.K), defaults.K_MAX), float(s.radius),
                    tuple(s.tint), frozenset(s.selection), math.degrees(s.angle), toon, note, material.name_full,
                    int(material.pass_index), texture, emission, shadow)
 

@@ -5,7 +5,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import native, radius_clamp
+from ..bridge import native
+from . import radius_clamp
 
 
 @dataclass
@@ -105,3 +106,10 @@ def first_two_faces(tri_edges, edge_count):
     same = sides[nxt] == sides[st]
     second[sides[st[same]]] = faces[nxt[same]]
     return first, second
+
+def surface_ids(edge_data, faces):
+    """Triangle indices (-1: none) -> the ids the surface pass writes for them (0: none), as
+    float32 (exact below 2^24 triangles per object)."""
+    faces = np.asarray(faces, np.int64)
+    ids = np.where(faces >= 0, edge_data.surface_id[np.maximum(faces, 0)], 0)
+    return np.ascontiguousarray(ids, np.float32)

@@ -8,7 +8,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import native, outline_lines
+from ..bridge import native
+from ..geometry import outline_lines
+from ..geometry.edge_data import surface_ids
 
 # Draw order; where two types share an edge the first drawn wins a tie (line_pass.py).
 TYPES = ("silhouette", "border", "crease", "contour", "material", "marked")
@@ -100,13 +102,6 @@ class LineSegments:
     def __len__(self):
         return len(self.p0)
 
-
-def surface_ids(edge_data, faces):
-    """Triangle indices (-1: none) -> the ids the surface pass writes for them (0: none), as
-    float32 (exact below 2^24 triangles per object)."""
-    faces = np.asarray(faces, np.int64)
-    ids = np.where(faces >= 0, edge_data.surface_id[np.maximum(faces, 0)], 0)
-    return np.ascontiguousarray(ids, np.float32)
 
 
 def taper_params(links, chains):

@@ -12,8 +12,12 @@ import bpy
 import gpu
 import numpy as np
 
-from . import compat, lines, native, render_cache, render_passes, scene_sync, svg_output, viewport
-from .passes import camera, frame, shadow_plan, toon
+from .. import compat
+from ..bridge import native
+from ..extract import render_cache, scene_sync
+from ..linework import lines
+from ..passes import camera, frame, shadow_plan, toon
+from . import clamp_notes, render_passes, svg_output, viewport
 
 # Tests set `capture = True` to receive the last render's record (pixels, pass buffers, camera,
 # scene, reports) in `last_render`, per view layer in `last_render["layers"]`. Otherwise a
@@ -318,6 +322,7 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         scene = depsgraph.scene
         render_cache.EXTRACTS.begin(scene.name, (scene.frame_current, scene.frame_subframe))
         data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings, cache=render_cache.EXTRACTS)
+        clamp_notes.NOTES.rendered(inst.mesh for inst in data.instances)  # the material panel's note
         if len(data.lights) > frame.MAX_LIGHTS:
             data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
         for line in dict.fromkeys(data.reports):  # once each: geometries share materials
@@ -339,7 +344,7 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
             if capture:
                 record.setdefault("progress", []).append((done, total, time.monotonic()))
 
-        svg = line_settings is not None and svg_output.wanted(depsgraph.scene)
+        svg = line_settings is not None and svg_output.wanted(depsgraph.scene, depsgraph.view_layer.name)
         out = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=capture,
                            passes=tuple(buffers), preview=preview, vector=svg)
         stats, vector = out.stats, out.lines
@@ -377,8 +382,10 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
 
 @bpy.app.handlers.persistent
 def _forget_extractions(*_args):
-    """Another file: nothing of the last one's meshes is kept (render_cache.py)."""
+    """Another file: nothing of the last one's meshes is kept (render_cache.py), nor its
+    materials' radius clamp notes (clamp_notes.py)."""
     render_cache.EXTRACTS.clear()
+    clamp_notes.NOTES.clear()
 
 
 @bpy.app.handlers.persistent

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import native
+from ..bridge import native
 
 # Pairs (edge, polygon corner) expanded at once: bounds the temporary arrays on dense meshes.
 _CHUNK = 1 << 21

@@ -7,12 +7,14 @@ import time
 
 import bpy
 
-from . import svg_write, vector_lines
+from ..linework import svg_write, vector_lines
 from .panel_base import EdgeLightPanel
 
-# A render-based export (the operator without a 3D view, e.g. headless) names its file here;
-# the engine writes it in place of the frame's path, once.
-_pending = {}
+# A render-based export (the operator without a 3D view, e.g. headless) names its file and view
+# layer in this window-manager property for the render it starts (the window manager's
+# properties are never saved): the engine writes that layer's SVG there in place of the frame's
+# path. The operator sets and clears it.
+_REQUEST = "edgelight_svg_export"
 _IMAGE_EXTENSIONS = {".png", ".jpg", ".jpeg", ".exr", ".tif", ".tiff", ".bmp", ".tga", ".hdr", ".jp2",
                      ".webp", ".cin", ".dpx", ".rgb", ".sgi"}
 
@@ -24,8 +26,22 @@ class EdgeLightSvgSettings(bpy.types.PropertyGroup):
                     "(<output path>_####.svg), one layer per line type")
 
 
-def wanted(scene):
-    return bool(_pending) or scene.edgelight_svg.enabled
+class EdgeLightSvgExport(bpy.types.PropertyGroup):
+    """What the export operator asks of the render it starts: the SVG of `view_layer` at `path`."""
+    path: bpy.props.StringProperty(subtype='FILE_PATH')
+    view_layer: bpy.props.StringProperty()
+
+
+def export_request(layer):
+    """The path the export operator asked the running render to write for view layer `layer`,
+    or ""."""
+    wms = bpy.data.window_managers
+    request = getattr(wms[0], _REQUEST, None) if len(wms) else None
+    return request.path if request is not None and request.path and request.view_layer == layer else ""
+
+
+def wanted(scene, layer):
+    return bool(export_request(layer)) or scene.edgelight_svg.enabled
 
 
 def frame_svg_path(scene, layer=None, still=False, view=None):
@@ -68,7 +84,7 @@ def write_render(scene, layer, scene_data, camera, line_settings, vector, record
     if line_settings is None or vector is None:
         return
     start = time.perf_counter()
-    path = _pending.pop("path", None) or frame_svg_path(scene, layer, still, eye)
+    path = export_request(layer) or frame_svg_path(scene, layer, still, eye)
     size = write(path, scene_data, camera, line_settings, vector, view)
     # The record outlives the render only for tests (engine.capture).
     record.update(svg=path, svg_bytes=size, svg_seconds=time.perf_counter() - start, vector=vector)
@@ -97,19 +113,21 @@ class EDGELIGHT_OT_export_svg(bpy.types.Operator):
         return {'RUNNING_MODAL'}
 
     def execute(self, context):
-        from . import lines
+        from ..linework import lines
         if lines.settings_of(context.scene.edgelight) is None:
             self.report({'ERROR'}, "EdgeLight: no lines to export (turn on EdgeLight Lines)")
             return {'CANCELLED'}
         path = bpy.path.ensure_ext(bpy.path.abspath(self.filepath), ".svg")
         camera = _view_camera(context)
         if camera is None:
-            # The scene camera: one render writes it (a render has a GPU context even headless).
-            _pending["path"] = path
+            # The scene camera: a render writes this view layer's (a render has a GPU context
+            # even headless).
+            request = getattr(context.window_manager, _REQUEST)
+            request.path, request.view_layer = path, context.view_layer.name
             try:
                 bpy.ops.render.render()
             finally:
-                _pending.clear()
+                request.path, request.view_layer = "", ""
         else:
             self._export_view(context, camera, path)
         self.report({'INFO'}, f"EdgeLight: lines written to {path}")
@@ -117,8 +135,10 @@ class EDGELIGHT_OT_export_svg(bpy.types.Operator):
 
     @staticmethod
     def _export_view(context, camera, path):
-        from . import lines, native, scene_sync
-        from .passes import frame
+        from ..bridge import native
+        from ..extract import scene_sync
+        from ..linework import lines
+        from ..passes import frame
         try:
             lib = native.load()  # as the engine loads it, without importing the engine
         except native.NativeError as e:
@@ -150,7 +170,7 @@ class EDGELIGHT_PT_lines_svg(EdgeLightPanel, bpy.types.Panel):
         layout.operator(EDGELIGHT_OT_export_svg.bl_idname, icon='EXPORT')
 
 
-CLASSES = (EdgeLightSvgSettings, EDGELIGHT_OT_export_svg, EDGELIGHT_PT_lines_svg)
+CLASSES = (EdgeLightSvgSettings, EdgeLightSvgExport, EDGELIGHT_OT_export_svg, EDGELIGHT_PT_lines_svg)
 
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(CLASSES)
@@ -159,8 +179,10 @@ _register_classes, _unregister_classes = bpy.utils.register_classes_factory(CLAS
 def register():
     _register_classes()
     bpy.types.Scene.edgelight_svg = bpy.props.PointerProperty(type=EdgeLightSvgSettings)
+    setattr(bpy.types.WindowManager, _REQUEST, bpy.props.PointerProperty(type=EdgeLightSvgExport, options={'HIDDEN'}))
 
 
 def unregister():
+    delattr(bpy.types.WindowManager, _REQUEST)
     del bpy.types.Scene.edgelight_svg
     _unregister_classes()

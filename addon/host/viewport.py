@@ -13,11 +13,14 @@ from dataclasses import dataclass
 import bpy
 import numpy as np
 
-from . import edge_choice, lines, scene_sync, world_light
-from .materials import shading_of
-from .passes import batches, camera, frame, frame_data, line_pass, shadow_plan, toon, view_lines
-from .passes.targets import Targets
-from .radius_scale import radius_scale
+from ..extract import scene_sync, world_light
+from ..extract.materials import shading_of
+from ..geometry import edge_choice
+from ..geometry.radius_scale import radius_scale
+from ..linework import lines
+from ..passes import batches, camera, frame, frame_data, line_pass, shadow_plan, toon, view_lines
+from ..passes.targets import Targets
+from . import clamp_notes
 
 # Below one 8-bit step an edge cannot change a pixel.
 MIN_WEIGHT = 1.0 / 255.0
@@ -170,6 +173,8 @@ class ViewportState:
             extract, notes = None, [str(e)]
         else:
             notes = extract.notes() if extract is not None else []
+            if extract is not None:
+                clamp_notes.NOTES.hold(extract)  # the material panel's note counts what this view draws
         return (ObjectCache(extract, materials) if extract is not None else None), notes
 
     def _gather_reports(self):
@@ -191,10 +196,12 @@ class ViewportState:
         shading = [shading_of(m) for m in materials] or [shading_of(None)]
         if slot_corner_inputs(shading, ex.missing_uv) != slot_corner_inputs(ex.slot_shading):
             return False  # the batches hold each slot's UVs and colours (batches.slot_uv, slot_colors)
-        edges = edge_choice.choose_edges(ex.edge_data, shading)
-        same = edge_choice.same_edges(edges, ex.edges)
+        chosen = edge_choice.choose(ex.edge_data, shading)
+        same = edge_choice.same_edges(chosen.edges, ex.edges)
         cache.materials = list(materials)
-        cache.extract = dataclasses.replace(ex, slot_shading=shading, edges=ex.edges if same else edges)
+        cache.extract = dataclasses.replace(ex, slot_shading=shading, edges=ex.edges if same else chosen.edges,
+                                            clamps=chosen.clamps)
+        clamp_notes.NOTES.hold(cache.extract)
         if cache.gpu is not None:
             cache.gpu.extract = cache.extract  # its batches draw the new extract's shading
         cache.edges_stale = cache.edges_stale or not same

@@ -16,7 +16,7 @@ edge_highlight.frag). The library decides them (native/src/band_ends.cpp, el_ban
 """
 import numpy as np
 
-from . import native
+from ..bridge import native
 
 SQUARE = np.float32(np.pi / 2)
 

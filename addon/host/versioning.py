@@ -11,8 +11,8 @@ properties of the group: `group.get(name)` reads them (group-level access works 
 import bpy
 from bpy.app.handlers import persistent
 
-from . import color_ramp, materials
-from .material_defaults import RADIUS_LAYOUT_4
+from ..extract import color_ramp, materials
+from ..extract.material_defaults import RADIUS_LAYOUT_4
 from .properties import K_MAX, SETTINGS_VERSION
 
 STAMP = "settings_version"

@@ -3,13 +3,13 @@ from one mesh's edge data (edge_data.EdgeData): the rule, in one function. No bp
 tests import it.
 """
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
-from . import band_ends, corner_patches, native, radius_clamp
-from .edge_data import mean_and_turn, shading_normals
-from .lines import surface_ids
-from .radius_clamp_notes import record_radius_clamps
+from ..bridge import native
+from . import band_ends, corner_patches, radius_clamp, radius_clamp_notes
+from .edge_data import mean_and_turn, shading_normals, surface_ids
 
 
 @dataclass
@@ -30,6 +30,13 @@ class EdgeSet:
         return len(self.radius)
 
 
+class Choice(NamedTuple):
+    """What choose returns: the chosen edges by slot, and what the radius clamp did to each
+    material's (radius_clamp_notes.RadiusClamps, for the material panel's note)."""
+    edges: dict
+    clamps: tuple
+
+
 def same_edges(a, b):
     """Whether two choose_edges results draw the same edges (slots, counts, radii, positions)."""
     if a.keys() != b.keys():
@@ -45,9 +52,14 @@ def choice_key(shading):
 
 
 def choose_edges(d, shading):
-    """Edges each material rounds. An edge between two materials is rounded when both enable
-    rounding and either one's rule picks it; it takes the smaller radius and the shading of the
-    material of its first face."""
+    """choose(d, shading).edges."""
+    return choose(d, shading).edges
+
+
+def choose(d, shading):
+    """Edges each material rounds (a Choice). An edge between two materials is rounded when both
+    enable rounding and either one's rule picks it; it takes the smaller radius and the shading
+    of the material of its first face."""
     flags, angles, normals, edges, positions = d.flags, d.angles, d.normals, d.edges, d.positions
     face_a, face_b, tri_slot, sharp = d.face_a, d.face_b, d.tri_slot, d.sharp
     # The rule (the library's el_edge_rules): rounded where manifold with two faces, both faces'
@@ -80,7 +92,7 @@ def choose_edges(d, shading):
         limit = np.full(len(picked_edges), np.inf)
     # For the material panel's note (radius_clamp_notes): nothing is written to the materials.
     e = picked_edges
-    record_radius_clamps(d, shading, ((slot_a[e], pick_a[e], rad_a[e]), (slot_b[e], pick_b[e], rad_b[e])), limit)
+    clamps = radius_clamp_notes.count(shading, ((slot_a[e], pick_a[e], rad_a[e]), (slot_b[e], pick_b[e], rad_b[e])), limit)
     convex = (flags & native.EDGE_CONVEX) != 0
     corners = corner_patches.find(edges, positions, normals, convex, chosen, radius, stop)
     # A patch takes one material's shading: where the three bands have different ones, their
@@ -100,4 +112,4 @@ def choose_edges(d, shading):
                                  band_ends.end_angles(d.polygons, positions, normals, edges, sel, faces, chosen,
                                                       ~stop, d.edge_polygons()),
                                  corners.subset(np.flatnonzero(corner_slot == slot)), turn, edges[sel])
-    return out
+    return Choice(out, clamps)

@@ -10,7 +10,8 @@ is), so the stroke's centre lies on the strip's inner side. The library does the
 el_view_lines); this module hands it the mesh's records once per extraction. No bpy: plain-Python tests import it."""
 import numpy as np
 
-from . import native, rounded_outline
+from ..bridge import native
+from . import rounded_outline
 
 
 def outline_of(extract):

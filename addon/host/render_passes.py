@@ -9,7 +9,7 @@ from types import SimpleNamespace
 import bpy
 import numpy as np
 
-from . import compat
+from .. import compat
 from .panel_base import EdgeLightPanel
 
 # Where nothing was drawn, Depth holds what Cycles and EEVEE write there.

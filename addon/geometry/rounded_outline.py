@@ -6,8 +6,7 @@ the nearest of those whose strip reaches into its patch (a quad's other half at 
 the thin facets of a triangulated face along it). No bpy: plain-Python tests import it."""
 import numpy as np
 
-from . import native
-from .passes import shader_specs
+from ..bridge import native, shader_specs
 
 # The texture layout: shaders/outline_layout.json (the surface program's EL_OUTLINE_* defines; the
 # edge and corner records are also what the library's el_outline_lines reads).
@@ -103,7 +102,7 @@ def _concave_ends(extract, verts):
     more than CONCAVE_END_DEG, rounded or not (a bore's wall); else 0. The silhouette may run on
     there into the concave edge's, behind the face, and the strip's end takes no half disc of its
     own (rounded_outline.glsl's el_strip_part)."""
-    from . import native
+    from ..bridge import native
     d = extract.edge_data
     out = np.zeros(verts.shape, np.float32)
     if d is None or d.flags is None or not np.all(verts >= 0):

@@ -74,6 +74,6 @@ def no_image():
     if "texture" not in _placeholder:
         import gpu
 
-        from . import compat
+        from .. import compat
         _placeholder["texture"] = compat.texture((1, 1), 'RGBA32F', gpu.types.Buffer('FLOAT', 4, [0.0] * 4))
     return _placeholder["texture"]

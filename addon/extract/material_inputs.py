@@ -6,8 +6,8 @@ per material (a report line) and in its panel, instead of rendering as if it wer
 """
 from dataclasses import dataclass
 
-from . import compat
-from .passes import shader_specs
+from .. import compat
+from ..bridge import shader_specs
 
 # Principled BSDF inputs EdgeLight reads (materials.shading_of): their values, or the chains
 # linked into them (node_program); a chain it cannot evaluate leaves the socket's own value

@@ -2,9 +2,10 @@
 EdgeLight are shown for it too."""
 import bpy
 
-from . import color_ramp, compat, material_inputs, ui_light
-from .materials import radius_clamps
-from .materials import unread as unread_of
+from .. import compat
+from ..extract import color_ramp, material_inputs
+from ..extract.materials import unread as unread_of
+from . import clamp_notes, ui_light
 from .panel_base import EdgeLightMaterialPanel, EdgeLightPanel
 from .properties import LINE_TYPES
 
@@ -66,9 +67,9 @@ def _length(value, scene):
 
 def radius_clamp_note(material, scene):
     """The material panel's lines saying that some edges' faces allow less than the Radius (the
-    clamp of radius_clamp.py, counted when EdgeLight last picked the edges: materials.py); ()
-    when none is clamped or nothing was counted at this radius."""
-    counted = radius_clamps(material)
+    clamp of radius_clamp.py, as clamp_notes.py keeps it: the Rendered view's, else the last
+    render's); () when none is clamped or nothing was counted at this radius."""
+    counted = clamp_notes.NOTES.radius_clamps(material)
     if not counted or not counted[0]:
         return ()
     clamped, rounded, smallest = counted
@@ -87,7 +88,7 @@ class EDGELIGHT_OT_ramp_new(bpy.types.Operator):
         return context.material is not None and context.material.edgelight.shade_ramp is None
 
     def execute(self, context):
-        from .materials import base_color_of, default_ramp
+        from ..extract.materials import base_color_of, default_ramp
         mat = context.material
         mat.edgelight.shade_ramp = color_ramp.new_ramp(default_ramp(base_color_of(mat)))
         return {'FINISHED'}

@@ -3,8 +3,8 @@ import math
 
 import bpy
 
+from ..extract import material_defaults as defaults
 from . import line_units
-from . import material_defaults as defaults
 
 # The settings layout. Bumped when a stored property is renamed or changes meaning; each bump
 # gets a step in versioning.py that upgrades files saved with the layout before.
@@ -16,12 +16,7 @@ from . import material_defaults as defaults
 #   6: scene `use_shadows` (cast shadows, on by default); scenes of older layouts keep none
 SETTINGS_VERSION = 6
 
-# The largest Highlight Strength: 1 draws the coverage a real rounded edge of the radius has.
-# Above 1, W = clamp(K x covered length, 0, 1) saturates the band's partly covered pixels: on a
-# band under a pixel wide that is the band of K times the radius, and on a wider band only its
-# anti-aliasing is lost (stair-stepped rims). So a wider band is asked for with the radius, which
-# stays a fillet's (radius_clamp.py); docs/addon.md, "Large settings".
-K_MAX = 1.0
+K_MAX = defaults.K_MAX  # versioning.py caps older files' K at it
 
 
 def _tag(self, context):

@@ -10,12 +10,14 @@ from dataclasses import dataclass, field
 import bpy
 import numpy as np
 
-from . import closed_surfaces, compat, native, radius_clamp, render_cache, world_light
-from .edge_choice import choice_key, choose_edges, same_edges
-from .edge_data import EdgeData, first_two_faces
-from .lines import static_lines
+from .. import compat
+from ..bridge import native, shader_specs
+from ..geometry import closed_surfaces, radius_clamp
+from ..geometry.edge_choice import choice_key, choose, same_edges
+from ..geometry.edge_data import EdgeData, first_two_faces
+from ..linework.lines import static_lines
+from . import render_cache, world_light
 from .materials import shading_of
-from .passes import shader_specs
 
 GEOMETRY_TYPES = {'MESH', 'CURVE', 'SURFACE', 'FONT', 'META'}
 
@@ -28,6 +30,7 @@ class MeshExtract:
     slot_triangles: dict              # slot -> triangle indices
     slot_shading: list                # slot -> materials.Shading
     edges: dict = field(default_factory=dict)  # slot -> edge_choice.EdgeSet
+    clamps: tuple = ()                          # radius_clamp_notes.RadiusClamps of `edges`' choice
     info: dict = field(default_factory=dict)
     edge_data: object = None                    # edge_data.EdgeData
     native: object = None                       # native.Mesh, kept for chains and views
@@ -306,7 +309,7 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
     out.edge_data = EdgeData(m.edge_flags(), m.edge_angles(), m.edge_normals(), edges, positions,
                              *first_two_faces(tri_edges, len(edges)), tri_slot, sharp, bevel, surface_id, polygons,
                              tri_verts=tri_verts, corner_nor=nor)
-    out.edges = choose_edges(out.edge_data, shading)
+    out.edges, out.clamps = choose(out.edge_data, shading)
     out.native = m
     out.update_lines(line_settings)
     if info["flipped_winding_edges"]:
@@ -337,8 +340,9 @@ def _reused(cache, key, kept, shading, line_settings):
     no per-view state."""
     extract, chosen_with = kept
     if choice_key(shading) != chosen_with:
-        chosen = choose_edges(extract.edge_data, shading)
-        extract = dataclasses.replace(extract, edges=extract.edges if same_edges(chosen, extract.edges) else chosen)
+        chosen = choose(extract.edge_data, shading)
+        extract = dataclasses.replace(extract, edges=extract.edges if same_edges(chosen.edges, extract.edges)
+                                      else chosen.edges, clamps=chosen.clamps)
         _keep(cache, key, extract, shading)
     out = dataclasses.replace(extract, slot_shading=shading, views={})
     out.update_lines(line_settings)

@@ -4,9 +4,10 @@ shaders/line.frag.glsl (docs/lines.md, "Visibility"); test_svg_output.py pins th
 """
 import numpy as np
 
-from .passes.line_pass import OUTLINE_TYPES, REL_BIAS
-
-__all__ = ("visible", "OUTLINE_TYPES")
+# Relative part of the depth bias (line.frag.glsl), against float rounding of depths.
+REL_BIAS = 1e-4
+# Line types that can lie on an outline: the background beside them does not hide them.
+OUTLINE_TYPES = frozenset({"silhouette", "border", "contour", "wire"})
 
 
 def clipped(z, projection):

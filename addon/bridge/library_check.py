@@ -6,7 +6,7 @@ The record beside the library (libedgelight.so -> libedgelight.json) is required
 size and SHA-256 must equal it. Without one a damaged file could only be judged by its format's
 headers, and a flipped byte inside passes any such check and crashes Blender when it runs.
 scripts/make_package.py writes the record into every package, and the build writes one beside
-each library it makes (`python3 addon/library_check.py LIBRARY`), so a developer build named by
+each library it makes (`python3 addon/bridge/library_check.py LIBRARY`), so a developer build named by
 EDGELIGHT_LIBRARY is checked the same way. Nothing here reads a format's headers, so the check
 is the same for ELF, PE and Mach-O.
 
@@ -53,7 +53,7 @@ def check(library):
     if not os.path.exists(record_file):
         raise Corrupt(f"{library} has no checksum record ({os.path.basename(record_file)} beside it), so it "
                       "cannot be checked before it is loaded: reinstall the add-on (a developer build writes "
-                      "one: python3 addon/library_check.py LIBRARY)")
+                      "one: python3 addon/bridge/library_check.py LIBRARY)")
     try:
         with open(record_file, encoding="utf-8") as f:
             record = json.load(f)
@@ -79,6 +79,6 @@ def write_record(library, name=None):
         f.write("\n")
 
 
-if __name__ == "__main__":  # the build: python3 addon/library_check.py LIBRARY...
+if __name__ == "__main__":  # the build: python3 addon/bridge/library_check.py LIBRARY...
     for path in sys.argv[1:]:
         write_record(path)
