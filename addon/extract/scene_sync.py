@@ -31,6 +31,7 @@ class MeshExtract:
     slot_shading: list                # slot -> materials.Shading
     edges: dict = field(default_factory=dict)  # slot -> edge_choice.EdgeSet
     clamps: tuple = ()                          # radius_clamp_notes.RadiusClamps of `edges`' choice
+    cache_key: object = None                    # the render cache's key it is kept under (render_cache.py)
     info: dict = field(default_factory=dict)
     edge_data: object = None                    # edge_data.EdgeData
     native: object = None                       # native.Mesh, kept for chains and views
@@ -112,6 +113,7 @@ class SceneData:
     reports: list                      # what was skipped and why
     failed: list = field(default_factory=list)  # the objects skipped for an error in their data
     environment: object = None         # world_light.Environment: an image lights the scene
+    extracts: dict = field(default_factory=dict)  # geometry_key -> MeshExtract (None: skipped): collect's `kept`
 
 
 class SkipObject(Exception):
@@ -321,6 +323,7 @@ def extract_mesh(name, mesh, materials, lib=None, line_settings=None, cache=None
                                   f"than {FARTHEST:g} units); the {dropped[0]} faces using them are not drawn")
     if info["degenerate_triangles"]:
         out.info["note"] = f"{name}: {info['degenerate_triangles']} zero-area faces drawn without edge highlights"
+    out.cache_key = key
     if cache is not None:
         _keep(cache, key, out, shading)
     if same_content is not None:
@@ -654,13 +657,40 @@ def read_object(ob, label, materials, lib=None, line_settings=None, cache=None, 
             ob.to_mesh_clear()
 
 
-def collect(depsgraph, lib=None, line_settings=None, cache=None):
+# What may change from one frame of a render job to the next with every extraction still what
+# it was: where objects are, cameras and lights (walk_instances reads them every frame), and the
+# animation that moves them.
+_MOVES_ONLY = (bpy.types.Camera, bpy.types.Light, bpy.types.Action)
+
+
+def only_moved(depsgraph):
+    """Whether the depsgraph's updates since its last evaluation (within a render job: the last
+    frame) leave every extraction as it was: objects moved, cameras and lights changed; no
+    geometry, material, world or setting did. (A moved object's update says "shading" too; a
+    material assigned in its place changes the object's geometry_key, so it is read anew.)"""
+    for u in depsgraph.updates:
+        if isinstance(u.id, bpy.types.Object):
+            if u.is_updated_geometry:
+                return False
+        elif not isinstance(u.id, _MOVES_ONLY):
+            return False
+    return True
+
+
+def collect(depsgraph, lib=None, line_settings=None, cache=None, kept=None):
     """Everything visible in the evaluated scene. Objects that fail are reported and skipped.
-    `cache`: a render_cache.ExtractCache that extractions are kept in and reused from."""
+    `cache`: a render_cache.ExtractCache that extractions are kept in and reused from. `kept`:
+    the last frame's SceneData.extracts, drawn again as they are, nothing read (only_moved says
+    when they may be)."""
     reports, extracted, failed = [], {}, []
     same_content = {}  # this render's extractions by content and materials (extract_mesh)
 
     def lookup(key, ob, inst, materials):
+        if key not in extracted and kept is not None and kept.get(key) is not None:
+            extracted[key] = kept[key]
+            if cache is not None and extracted[key].cache_key is not None:
+                cache.get(extracted[key].cache_key)  # used this frame: kept past it (render_cache.py)
+            reports.extend(extracted[key].notes())
         if key not in extracted:
             extracted[key] = None
             try:
@@ -681,4 +711,4 @@ def collect(depsgraph, lib=None, line_settings=None, cache=None):
     world = world_light.read(depsgraph.scene.world)
     if world.note:
         reports.append(world.note)
-    return SceneData(instances, lights, world.ambient, reports, failed, world.environment)
+    return SceneData(instances, lights, world.ambient, reports, failed, world.environment, extracted)

@@ -16,7 +16,7 @@ from .. import compat
 from ..bridge import native
 from ..extract import render_cache, scene_sync
 from ..linework import lines
-from ..passes import camera, frame, shadow_plan, toon
+from ..passes import batches, camera, frame, shadow_plan, toon
 from . import clamp_notes, render_passes, svg_output, viewport
 
 # Tests set `capture = True` to receive the last render's record (pixels, pass buffers, camera,
@@ -179,6 +179,8 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         super().__init__(*args, **kwargs)  # 4.4+ passes arguments through
         self.viewport = None
         self._viewport_errors = set()
+        self._gpu_caches = {}  # view layer -> passes.batches.GpuCache (_gpu_cache)
+        self._last_extracts = {}  # view layer -> its last frame's SceneData.extracts (_render_pixels)
 
     # ---- viewport -------------------------------------------------------------------------
     def view_update(self, context, depsgraph):
@@ -310,6 +312,14 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         finally:
             self.end_result(result)
 
+    def _gpu_cache(self, depsgraph):
+        """The view layer's GPU batches kept from this engine's last render of it. Blender keeps
+        a GPU engine, and the render thread's GPU context its batches live in, for one render
+        job (every frame of an animation, every view layer) and frees both when the job ends,
+        Persistent Data or not (RE_engine_use_persistent_data): so a frame whose meshes did not
+        change builds no batch, and what is held is what the layer's last frame drew."""
+        return self._gpu_caches.setdefault(depsgraph.view_layer.name, batches.GpuCache())
+
     def _render_pixels(self, depsgraph, camera, crop, lib, record, buffers, preview):
         """The region's pixels, drawn over `camera`'s (the region with its margin) and cropped;
         `buffers` receives the render passes' buffers, cropped."""
@@ -321,7 +331,13 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         # whose meshes did not change reuses them.
         scene = depsgraph.scene
         render_cache.EXTRACTS.begin(scene.name, (scene.frame_current, scene.frame_subframe))
-        data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings, cache=render_cache.EXTRACTS)
+        # Blender keeps the engine and its depsgraph for every frame of a job: a frame where only
+        # objects, cameras and lights moved draws the last frame's extractions, reading no mesh.
+        layer = depsgraph.view_layer.name
+        kept = self._last_extracts.get(layer) if scene_sync.only_moved(depsgraph) else None
+        data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings, cache=render_cache.EXTRACTS,
+                                  kept=kept)
+        self._last_extracts[layer] = data.extracts
         clamp_notes.NOTES.rendered(inst.mesh for inst in data.instances)  # the material panel's note
         if len(data.lights) > frame.MAX_LIGHTS:
             data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
@@ -346,7 +362,7 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
 
         svg = line_settings is not None and svg_output.wanted(depsgraph.scene, depsgraph.view_layer.name)
         out = frame.render(data, camera, s, progress=progress, cancelled=self.test_break, keep=capture,
-                           passes=tuple(buffers), preview=preview, vector=svg)
+                           passes=tuple(buffers), preview=preview, vector=svg, gpu_cache=self._gpu_cache(depsgraph))
         stats, vector = out.stats, out.lines
         buffers.update(out.passes)
         # Which instance and face cover each pixel -> its object's and its material's pass_index.

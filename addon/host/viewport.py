@@ -194,7 +194,7 @@ class ViewportState:
         extracted again."""
         ex = cache.extract
         shading = [shading_of(m) for m in materials] or [shading_of(None)]
-        if slot_corner_inputs(shading, ex.missing_uv) != slot_corner_inputs(ex.slot_shading):
+        if batches.slot_corner_inputs(shading, ex.missing_uv) != batches.slot_corner_inputs(ex.slot_shading):
             return False  # the batches hold each slot's UVs and colours (batches.slot_uv, slot_colors)
         chosen = edge_choice.choose(ex.edge_data, shading)
         same = edge_choice.same_edges(chosen.edges, ex.edges)
@@ -338,18 +338,6 @@ class ViewportState:
         c = self.counters
         return (f"{c.objects} objects | edges {c.edges_drawn} drawn, {c.edges_culled} culled | lines {c.lines_drawn}"
                 f" | cache hits {c.cache_hits} | native calls {c.native_calls} | uploads {c.uploads}")
-
-
-def slot_corner_inputs(shading, missing=frozenset()):
-    """Per slot, the UV map its image reads (None without one, or where it is among `missing`,
-    the maps the mesh lacked), the colour attribute its node program reads and the UV map its
-    Normal Map's tangents follow (None without): what its batches' UVs, colours and tangents
-    are."""
-    def uv(s):
-        source = s.texture.source if s.texture is not None else None
-        return source.uv_map if source is not None and source.uv_map not in missing else None
-    return tuple((uv(s), s.texture.program.attribute if s.texture is not None else None,
-                  s.texture.program.normal_uv if s.texture is not None else None) for s in shading)
 
 
 def scene_signature(state, scene):

@@ -1,5 +1,7 @@
 """GPU batches of one extracted mesh: surface triangles, edge quads and corner squares, per material
 slot."""
+import copy
+
 import gpu
 import numpy as np
 
@@ -273,6 +275,13 @@ class GpuMesh:
         self.rebuild_edges()
         self.rebuild_lines()
 
+    def drawing(self, extract):
+        """This GpuMesh's batches drawing `extract` (of the same content_key), whose shading
+        the passes read."""
+        out = copy.copy(self)
+        out.extract = extract
+        return out
+
     def rebuild_lines(self):
         """The static line types (view-independent), type -> ([batch, ...], count)."""
         from .line_pass import line_batches
@@ -294,6 +303,58 @@ class GpuMesh:
             self.outline[slot] = (textures, _triangles_batch(vbo, np.setdiff1d(listed, more)),
                                   _triangles_batch(vbo, rest), _triangles_batch(vbo, more))
         self.edge_count = sum(len(e) for e in self.extract.edges.values())
+
+
+def slot_corner_inputs(shading, missing=frozenset()):
+    """Per slot, the UV map its image reads (None without one, or where it is among `missing`,
+    the maps the mesh lacked), the colour attribute its node program reads and the UV map its
+    Normal Map's tangents follow (None without): what its batches' UVs, colours and tangents
+    are."""
+    def uv(s):
+        source = s.texture.source if s.texture is not None else None
+        return source.uv_map if source is not None and source.uv_map not in missing else None
+    return tuple((uv(s), s.texture.program.attribute if s.texture is not None else None,
+                  s.texture.program.normal_uv if s.texture is not None else None) for s in shading)
+
+
+def content_key(extract):
+    """What a GpuMesh of `extract` is built from: its surface (corner arrays), its chosen edges,
+    its static lines (each by identity: the copies a render cache or a material change makes
+    share them until they are made anew) and what each slot's batches read besides
+    (slot_corner_inputs). Equal keys build equal batches."""
+    return (id(extract.corner_pos), id(extract.edges), id(extract.lines),
+            slot_corner_inputs(extract.slot_shading, extract.missing_uv))
+
+
+class GpuCache:
+    """GpuMeshes kept from one frame of a render job to the next, by content_key: a frame of
+    unchanged meshes builds no batch. The engine keeps one per view layer for as long as Blender
+    keeps the engine and the GPU context the batches live in (one render job). A frame takes
+    the meshes it draws (mesh) and then drops the ones it did not (end_render)."""
+
+    def __init__(self):
+        self._kept = {}        # content key -> GpuMesh (its extract keeps the key's arrays alive)
+        self._used = set()
+        self.built = 0         # GpuMeshes built (the tests' counter)
+
+    def mesh(self, extract, line_chunk):
+        """The GpuMesh that draws `extract`: kept batches where its content_key has some. Its
+        own copy: two objects of one content may differ in their materials, whose shading the
+        passes read from the GpuMesh's extract."""
+        key = content_key(extract)
+        gm = self._kept.get(key)
+        if gm is None or gm.line_chunk != line_chunk:
+            gm = self._kept[key] = GpuMesh(extract, line_chunk)
+            self.built += 1
+        self._used.add(key)
+        return gm.drawing(extract)
+
+    def end_render(self):
+        self._kept = {k: v for k, v in self._kept.items() if k in self._used}
+        self._used = set()
+
+    def __len__(self):
+        return len(self._kept)
 
 
 _fullscreen = {}

@@ -46,6 +46,7 @@ class Stats:
     samples: int = 0
     samples_requested: int = 0
     lines_drawn: int = 0
+    meshes_built: int = 0         # meshes whose GPU batches this frame built (render(gpu_cache=...) keeps the rest)
 
 
 def draw(scene, camera, settings, targets, gpu_meshes, progress=None, cancelled=None, view_batches=None,
@@ -180,7 +181,7 @@ class FrameResult:
 
 
 def render(scene, camera, settings, progress=None, cancelled=None, keep=False, passes=(), preview=None,
-           vector=False):
+           vector=False, gpu_cache=None):
     """Final render: draws and reads back a FrameResult.
 
     `keep`: the result keeps the last sample's surface, highlight, depth and lines buffers.
@@ -191,15 +192,22 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=False, p
     line passes run). Only what is named is drawn into or read back.
     `preview(pixels)`, when given, receives the image accumulated so far, at most once per
     PREVIEW_INTERVAL seconds of drawing.
-    `vector`: the result carries the LineRecord the vector output needs."""
+    `vector`: the result carries the LineRecord the vector output needs.
+    `gpu_cache`: a batches.GpuCache the meshes' batches are taken from and kept in (the engine's,
+    for the frames of one render job), else they are built for this render alone."""
     w, h = camera.width, camera.height
     wanted = set(passes or ())
     read_back, line_depth = {}, []
     targets = Targets(w, h, normal="normal" in wanted, surface_sum="surface" in wanted)
     gpu_meshes = {}
+    built = gpu_cache.built if gpu_cache is not None else 0
     for inst in scene.instances:
         if id(inst.mesh) not in gpu_meshes:
-            gpu_meshes[id(inst.mesh)] = batches.GpuMesh(inst.mesh, LINE_CHUNK)
+            gpu_meshes[id(inst.mesh)] = (gpu_cache.mesh(inst.mesh, LINE_CHUNK) if gpu_cache is not None
+                                         else batches.GpuMesh(inst.mesh, LINE_CHUNK))
+    built = gpu_cache.built - built if gpu_cache is not None else len(gpu_meshes)
+    if gpu_cache is not None:
+        gpu_cache.end_render()
     whiteout = settings.lines is not None and settings.lines.whiteout
     view_segments = view_lines.view_line_segments(scene, camera, settings.lines,
                                                   rounded=settings.highlights and not whiteout)
@@ -222,6 +230,7 @@ def render(scene, camera, settings, progress=None, cancelled=None, keep=False, p
 
     stats = draw(scene, camera, settings, targets, gpu_meshes, each_sample, cancelled, view_batches,
                  first_sample if wanted & {"depth", "normal"} or vector else None)
+    stats.meshes_built = built
     pixels = read(targets.result, w, h)
     lines = None
     if vector and line_depth:  # only the first sample writes ids: still the line pass's
