@@ -172,8 +172,9 @@ vec3 el_hsv_to_rgb(vec3 hsv)
 }
 
 /* A ColorRamp: `count` stops, their colours from operand `first`, positions four to a constant
- * from operand `pos`. */
-vec4 el_mat_ramp(float fac, bool linear, int count, int first, int pos)
+ * from operand `pos`; between two stops the left one's colour (how 0: Constant) or the two
+ * blended by t (1: Linear) or by t^2 (3 - 2t) (2: Ease). */
+vec4 el_mat_ramp(float fac, int how, int count, int first, int pos)
 {
   if (fac <= el_mat_operand(float(pos)).x) {
     return el_mat_operand(float(first));
@@ -183,10 +184,13 @@ vec4 el_mat_ramp(float fac, bool linear, int count, int first, int pos)
     if (fac < p1) {
       float p0 = el_mat_operand(float(pos + (k - 1) / 4))[(k - 1) % 4];
       vec4 c0 = el_mat_operand(float(first + k - 1));
-      if (!linear) {
+      if (how == 0) {
         return c0;
       }
       float t = p1 - p0 > 0.0 ? (fac - p0) / (p1 - p0) : 0.0;
+      if (how == 2) {
+        t = t * t * (3.0 - 2.0 * t);
+      }
       return c0 + t * (el_mat_operand(float(first + k)) - c0);
     }
   }
@@ -215,7 +219,7 @@ vec4 el_mat_op(int op, int sub, vec3 s, vec4 a, vec4 b, vec4 c, vec4 col)
       float v = el_mat_math(sub, a.x, b.x, c.x);
       return el_mat_float(s.x > 0.5 ? clamp(v, 0.0, 1.0) : v);
     }
-    case EL_OP_RAMP: return el_mat_ramp(a.x, sub == 1, int(s.x + 0.5), int(s.y + 0.5), int(s.z + 0.5));
+    case EL_OP_RAMP: return el_mat_ramp(a.x, sub, int(s.x + 0.5), int(s.y + 0.5), int(s.z + 0.5));
     case EL_OP_INVERT: return vec4(a.rgb + b.x * (1.0 - 2.0 * a.rgb), a.a);
     case EL_OP_SEPARATE: return el_mat_float(a[clamp(sub, 0, 3)]);
     case EL_OP_COMBINE: return vec4(a.x, b.x, c.x, 1.0);

@@ -162,17 +162,24 @@ def _hsv_to_rgb(h, s, v):
     return ((v, t, p), (q, v, p), (p, v, t), (p, q, v), (t, p, v), (v, p, q))[min(max(int(i), 0), 5)]
 
 
-def _ramp(fac, linear, positions, colours):
+# A ColorRamp's interpolations the RAMP instruction draws (its sub), as Blender's colour band.
+RAMP_INTERPOLATIONS = {'CONSTANT': 0, 'LINEAR': 1, 'EASE': 2}
+
+
+def _ramp(fac, how, positions, colours):
     """A ColorRamp (RGB) at `fac`: the first stop's colour before it, the last's after; between,
-    the left stop's (constant) or the two blended (linear)."""
+    the left stop's (how 0: Constant) or the two blended by t (1: Linear) or by t^2 (3 - 2t)
+    (2: Ease, BKE_colorband_evaluate's), t the fraction of the way from the left stop."""
     if fac <= positions[0]:
         return colours[0]
     for k in range(1, len(positions)):
         if fac < positions[k]:
-            if not linear:
+            if how == 0:
                 return colours[k - 1]
             span = positions[k] - positions[k - 1]
             t = (fac - positions[k - 1]) / span if span > 0.0 else 0.0
+            if how == 2:
+                t = t * t * (3.0 - 2.0 * t)
             return tuple(p + t * (q - p) for p, q in zip(colours[k - 1], colours[k]))
     return colours[-1]
 
@@ -202,7 +209,7 @@ def apply(op, sub, settings, a, b, c, texels=(), ramp=None, color=(0.0, 0.0, 0.0
             v = math.nan
         return _f(min(max(v, 0.0), 1.0) if settings[0] and not math.isnan(v) else v)
     if op == OP["RAMP"]:
-        return _ramp(a[0], sub == 1, *ramp)
+        return _ramp(a[0], sub, *ramp)
     if op == OP["INVERT"]:
         t = b[0]
         return (*(x + t * (1.0 - 2.0 * x) for x in a[:3]), a[3])
@@ -384,36 +391,56 @@ class _Compiler:
                          self.input(_socket(node, "Factor_Float")))
 
     def _map_range(self, node):
-        """A Map Range (float, linear), as EEVEE's map_range_linear, in Math instructions:
-        to_min + (value - from_min) / (from_max - from_min) x (to_max - to_min), clamped between
-        the two `to` values when it clamps."""
-        if node.data_type != 'FLOAT' or node.interpolation_type != 'LINEAR':
-            kind = node.interpolation_type if node.data_type == 'FLOAT' else node.data_type
-            raise Unsupported(f"{describe(node)}: its {kind.title().replace('_', ' ')} mapping")
+        """A Map Range (float) in Math instructions, as EEVEE's map_range_*: a factor t =
+        (value - from_min) / (from_max - from_min), then to_min + t x (to_max - to_min). Linear
+        takes t as it is; Stepped floor(t (steps + 1)) / steps; Smooth Step and Smoother Step
+        t clamped to [0, 1] through t^2 (3 - 2t) or t^3 (t (6t - 15) + 10), which is EEVEE's
+        value for either order of the from values. Linear and Stepped are clamped between the
+        two `to` values when the node clamps (the only modes whose Clamp Blender shows)."""
+        kind = node.interpolation_type
+        if node.data_type != 'FLOAT' or kind not in {'LINEAR', 'STEPPED', 'SMOOTHSTEP', 'SMOOTHERSTEP'}:
+            what = kind if node.data_type == 'FLOAT' else node.data_type
+            raise Unsupported(f"{describe(node)}: its {what.title().replace('_', ' ')} mapping")
 
         def socket(name):
             return self.input(next(s for s in node.inputs if s.name == name and s.enabled))
+
+        def math(operation, a, b=('const', _f(0.0)), c=('const', _f(0.0))):
+            return self.emit(OP["MATH"], MATH[operation], a=a, b=b, c=c)
+
+        def const(x):
+            return ('const', _f(x))
         value, from_min, from_max = socket("Value"), socket("From Min"), socket("From Max")
         to_min, to_max = socket("To Min"), socket("To Max")
-        span = self.emit(OP["MATH"], MATH["SUBTRACT"], a=from_max, b=from_min)
-        t = self.emit(OP["MATH"], MATH["DIVIDE"], a=self.emit(OP["MATH"], MATH["SUBTRACT"], a=value, b=from_min), b=span)
-        out = self.emit(OP["MATH"], MATH["MULTIPLY_ADD"], a=t, b=self.emit(OP["MATH"], MATH["SUBTRACT"], a=to_max, b=to_min),
-                        c=to_min)
-        return self.emit(OP["CLAMP"], 1, a=out, b=to_min, c=to_max) if node.clamp else out
+        t = math("DIVIDE", math("SUBTRACT", value, from_min), math("SUBTRACT", from_max, from_min))
+        if kind == 'STEPPED':
+            steps = socket("Steps")
+            t = math("DIVIDE", math("FLOOR", math("MULTIPLY", t, math("ADD", steps, const(1.0)))), steps)
+        elif kind in {'SMOOTHSTEP', 'SMOOTHERSTEP'}:
+            t = self.emit(OP["CLAMP"], 0, a=t, b=const(0.0), c=const(1.0))
+            if kind == 'SMOOTHSTEP':
+                t = math("MULTIPLY", math("MULTIPLY", t, t), math("MULTIPLY_ADD", t, const(-2.0), const(3.0)))
+            else:
+                inner = math("MULTIPLY_ADD", math("MULTIPLY_ADD", t, const(6.0), const(-15.0)), t, const(10.0))
+                t = math("MULTIPLY", math("MULTIPLY", math("MULTIPLY", t, t), t), inner)
+        out = math("MULTIPLY_ADD", t, math("SUBTRACT", to_max, to_min), to_min)
+        if node.clamp and kind in {'LINEAR', 'STEPPED'}:
+            return self.emit(OP["CLAMP"], 1, a=out, b=to_min, c=to_max)
+        return out
 
     def _ramp(self, node, out):
         """A ColorRamp's Color; its Alpha the Color's alpha (one RAMP instruction for both)."""
         if out.name == "Alpha":
             return self.emit(OP["SEPARATE"], 3, a=self.output(node, node.outputs["Color"]))
         ramp = node.color_ramp
-        if ramp.color_mode != 'RGB' or ramp.interpolation not in {'LINEAR', 'CONSTANT'}:
+        if ramp.color_mode != 'RGB' or ramp.interpolation not in RAMP_INTERPOLATIONS:
             what = ramp.interpolation if ramp.color_mode == 'RGB' else ramp.color_mode
             raise Unsupported(f"{describe(node)}: its {what.title()} interpolation")
         stops = sorted(((float(e.position), tuple(float(x) for x in e.color)) for e in ramp.elements),
                        key=lambda s: s[0])
         if len(stops) > MAX_STOPS:
             raise Unsupported(f"{describe(node)}: more than {MAX_STOPS} stops")
-        return self.emit(OP["RAMP"], int(ramp.interpolation == 'LINEAR'), a=self.input(node.inputs["Fac"]),
+        return self.emit(OP["RAMP"], RAMP_INTERPOLATIONS[ramp.interpolation], a=self.input(node.inputs["Fac"]),
                          ramp=([p for p, _ in stops], [c for _, c in stops]))
 
     def _image(self, node, out):

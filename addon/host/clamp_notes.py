@@ -19,7 +19,7 @@ class ClampNotes:
     def __init__(self):
         self._lock = threading.Lock()
         self._held = {}        # id(edge data) -> (weakref to it, its counts)
-        self._rendered = ()    # the last final render's counts, every geometry's
+        self._rendered = {}    # view layer -> {id(edge data): counts} of its last final render
 
     def hold(self, extract):
         """The viewport draws `extract` (scene_sync.MeshExtract): its counts replace what an
@@ -31,15 +31,12 @@ class ClampNotes:
             self._held = {k: v for k, v in self._held.items() if v[0]() is not None}
             self._held[id(geometry)] = (weakref.ref(geometry), tuple(extract.clamps))
 
-    def rendered(self, extracts):
-        """A final render drew `extracts` (each geometry once, however many instances)."""
-        seen, counts = set(), []
-        for ex in extracts:
-            if ex.edge_data is not None and id(ex.edge_data) not in seen:
-                seen.add(id(ex.edge_data))
-                counts.extend(ex.clamps)
+    def rendered(self, layer, extracts):
+        """A final render of view layer `layer` drew `extracts` (each geometry once, however many
+        instances): they replace what its last render counted."""
+        counts = {id(ex.edge_data): tuple(ex.clamps) for ex in extracts if ex.edge_data is not None}
         with self._lock:
-            self._rendered = tuple(counts)
+            self._rendered[layer] = counts
 
     def radius_clamps(self, material):
         """(edges clamped, edges rounded, smallest clamped radius) of `material` (a bpy
@@ -48,13 +45,15 @@ class ClampNotes:
         name, radius = material.name_full, float(material.edgelight.radius)
         with self._lock:
             held = [c for ref, counts in self._held.values() if ref() is not None for c in counts]
-            rendered = self._rendered
+            # Each geometry once, however many view layers drew it.
+            rendered = [c for counts in {k: v for layer in self._rendered.values() for k, v in layer.items()}.values()
+                        for c in counts]
         mine = [c for c in held if c.material == name]
         return total(mine or rendered, name, radius)
 
     def clear(self):
         with self._lock:
-            self._held, self._rendered = {}, ()
+            self._held, self._rendered = {}, {}
 
 
 NOTES = ClampNotes()

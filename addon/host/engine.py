@@ -333,12 +333,17 @@ class EdgeLightRenderEngine(bpy.types.RenderEngine):
         render_cache.EXTRACTS.begin(scene.name, (scene.frame_current, scene.frame_subframe))
         # Blender keeps the engine and its depsgraph for every frame of a job: a frame where only
         # objects, cameras and lights moved draws the last frame's extractions, reading no mesh.
+        # The view layers share that depsgraph, whose updates each layer's render clears: one
+        # layer sees what changed since the layer before it, so anything more than a move
+        # drops what every layer kept.
         layer = depsgraph.view_layer.name
-        kept = self._last_extracts.get(layer) if scene_sync.only_moved(depsgraph) else None
+        if not scene_sync.only_moved(depsgraph):
+            self._last_extracts.clear()
+        kept = self._last_extracts.get(layer)
         data = scene_sync.collect(depsgraph, lib=lib, line_settings=line_settings, cache=render_cache.EXTRACTS,
                                   kept=kept)
         self._last_extracts[layer] = data.extracts
-        clamp_notes.NOTES.rendered(inst.mesh for inst in data.instances)  # the material panel's note
+        clamp_notes.NOTES.rendered(layer, (inst.mesh for inst in data.instances))  # the material panel's note
         if len(data.lights) > frame.MAX_LIGHTS:
             data.reports.append(f"{len(data.lights)} lights; the {frame.MAX_LIGHTS} first are used")
         for line in dict.fromkeys(data.reports):  # once each: geometries share materials

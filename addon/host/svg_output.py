@@ -122,6 +122,10 @@ class EDGELIGHT_OT_export_svg(bpy.types.Operator):
         if camera is None:
             # The scene camera: a render writes this view layer's (a render has a GPU context
             # even headless).
+            if not context.view_layer.use:
+                self.report({'ERROR'}, f"EdgeLight: view layer '{context.view_layer.name}' does not render "
+                                       f"(its Use for Rendering is off): no lines to export")
+                return {'CANCELLED'}
             request = getattr(context.window_manager, _REQUEST)
             request.path, request.view_layer = path, context.view_layer.name
             try:

@@ -85,10 +85,10 @@ def notes():
     return helpers.addon().host.clamp_notes.NOTES
 
 
-def rendered():
-    """A render's extraction, handed to the notes as the engine hands it."""
+def rendered(layer="ViewLayer"):
+    """A render's extraction, handed to the notes as the engine hands it (for view layer `layer`)."""
     data = extract()
-    notes().rendered(inst.mesh for inst in data.instances)
+    notes().rendered(layer, (inst.mesh for inst in data.instances))
     return data
 
 
@@ -163,6 +163,19 @@ class RadiusClampNote(unittest.TestCase):
         held.pop()
         gc.collect()
         self.assertEqual(notes().radius_clamps(mat)[:2], (12, 12), "none held: the last render's again")
+
+    def test_every_view_layer_counts_each_geometry_once(self):
+        """Two layers that drew the cube: its edges count once. A layer rendered again replaces
+        only its own counts: a layer without the cube leaves the other's."""
+        mat = cube_scene(5.0)
+        meshes = [inst.mesh for inst in extract().instances]  # the layers' renders share the job's extractions
+        notes().rendered("A", meshes)
+        notes().rendered("B", meshes)
+        self.assertEqual(notes().radius_clamps(mat)[:2], (12, 12))
+        notes().rendered("B", ())  # B again, without the cube
+        self.assertEqual(notes().radius_clamps(mat)[:2], (12, 12), "A's counts stay")
+        notes().rendered("A", ())
+        self.assertIsNone(notes().radius_clamps(mat))
 
     def test_a_final_render_counts_for_the_note(self):
         helpers.needs_gpu()

@@ -117,10 +117,13 @@ def _two_images(tree, tex):
     return m.outputs["Color"]
 
 
-def _map_range(tree, tex, clamp=True):
-    """The image's luminance mapped from [0.2, 0.7] to [0.9, 0.1] (reversed), clamped or not."""
+def _map_range(tree, tex, clamp=True, interpolation='LINEAR'):
+    """The image's luminance mapped from [0.2, 0.7] to [0.9, 0.1] (reversed), clamped or not, by
+    `interpolation` (Stepped: 3 steps)."""
     m = tree.nodes.new('ShaderNodeMapRange')
-    m.clamp = clamp
+    m.clamp, m.interpolation_type = clamp, interpolation
+    if interpolation == 'STEPPED':
+        m.inputs["Steps"].default_value = 3.0
     m.inputs["From Min"].default_value, m.inputs["From Max"].default_value = 0.2, 0.7
     m.inputs["To Min"].default_value, m.inputs["To Max"].default_value = 0.9, 0.1
     tree.links.new(tex.outputs["Color"], m.inputs["Value"])
@@ -170,8 +173,13 @@ CHAINS = ([(f"mix {b}", lambda t, x, b=b: _mix(t, x, b)) for b in MIX_BLENDS]
           + [(f"math {op}", lambda t, x, op=op: _math(t, x, op)) for op in MATH_OPS]
           + [("math POWER clamped", lambda t, x: _math(t, x, 'POWER', clamp=True)),
              ("ramp LINEAR", lambda t, x: _ramp(t, x, 'LINEAR')), ("ramp CONSTANT", lambda t, x: _ramp(t, x, 'CONSTANT')),
+             ("ramp EASE", lambda t, x: _ramp(t, x, 'EASE')),
              ("separate, invert, clamp, combine", _misc), ("two images", _two_images),
              ("map range clamped", _map_range), ("map range", lambda t, x: _map_range(t, x, clamp=False)),
+             ("map range stepped", lambda t, x: _map_range(t, x, clamp=False, interpolation='STEPPED')),
+             ("map range stepped clamped", lambda t, x: _map_range(t, x, interpolation='STEPPED')),
+             ("map range smooth step", lambda t, x: _map_range(t, x, interpolation='SMOOTHSTEP')),
+             ("map range smoother step", lambda t, x: _map_range(t, x, interpolation='SMOOTHERSTEP')),
              ("gamma", _gamma), ("hue saturation value", _hue_sat), ("folded", _folded)])
 
 

@@ -179,7 +179,35 @@ class RenderCache(unittest.TestCase):
         """Only moves let a frame draw the last one's extractions: a keyframed colour is a
         material's update, and the frame draws it as a render of that frame alone does."""
         box = self.animation(2)
-        mat = box.data.materials[0]
+        self._keyframe_colour(box.data.materials[0])
+        drawn = self.frames(animation=True)
+        self.assertEqual(self.reads, [["Box"], ["Box"]], "read again (the render cache keeps its classification)")
+        bpy.context.scene.frame_set(2)
+        (_, alone), = self.frames()
+        np.testing.assert_array_equal(drawn[1][1], alone)
+        x, y = helpers.project(helpers.render(), [(0.0, 0.0, 1.0)])[0]
+        r, g, b = drawn[1][1][int(y), int(x), :3]
+        self.assertGreater(g, 2.0 * r, "frame 2 is green")
+
+    def test_two_view_layers_see_each_others_updates(self):
+        """The view layers of a job share one depsgraph whose updates each layer's render clears:
+        what one layer saw must reach the other (engine: anything more than a move, seen by
+        any layer, drops what every layer kept; Blender also lists the scene as updated at each
+        change of layer, so both read afresh). Both draw frame 2's keyed colour."""
+        box = self.animation(2)
+        bpy.context.scene.camera.animation_data_clear()
+        bpy.context.scene.view_layers.new("Second")
+        self._keyframe_colour(box.data.materials[0])
+        drawn = self.frames(animation=True)
+        self.assertEqual(len(drawn), 4, "two layers, two frames")
+        self.assertEqual(self.reads, [["Box"]] * 4)
+        x, y = helpers.project(helpers.render(), [(0.0, 0.0, 1.0)])[0]
+        for k, (_, image) in enumerate(drawn):
+            r, g, b = image[int(y), int(x), :3]
+            self.assertEqual(g > 2.0 * r, k >= 2, f"render {k} (layer {k % 2}, frame {k // 2 + 1}): {r:.3f} {g:.3f}")
+
+    def _keyframe_colour(self, mat):
+        """Grey on frame 1, green on frame 2."""
         bsdf = next((n for n in mat.node_tree.nodes if n.type == 'BSDF_PRINCIPLED'), None) \
             if mat.node_tree is not None and mat.use_nodes else None  # as scene_zoo.material made it
         for f, rgb in ((1, (0.6, 0.6, 0.6, 1.0)), (2, (0.1, 0.6, 0.1, 1.0))):
@@ -189,14 +217,6 @@ class RenderCache(unittest.TestCase):
             else:
                 mat.diffuse_color = rgb
                 mat.keyframe_insert("diffuse_color", frame=f)
-        drawn = self.frames(animation=True)
-        self.assertEqual(self.reads, [["Box"], ["Box"]], "read again (the render cache keeps its classification)")
-        bpy.context.scene.frame_set(2)
-        (_, alone), = self.frames()
-        np.testing.assert_array_equal(drawn[1][1], alone)
-        x, y = helpers.project(helpers.render(), [(0.0, 0.0, 1.0)])[0]
-        r, g, b = drawn[1][1][int(y), int(x), :3]
-        self.assertGreater(g, 2.0 * r, "frame 2 is green")
 
     def test_kept_batches_draw_each_object_with_its_own_materials(self):
         """Two objects of one content (a mesh copy, another material): one extraction, one set of

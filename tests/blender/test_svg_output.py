@@ -133,17 +133,20 @@ class Document(unittest.TestCase):
         helpers.needs_gpu()
         scene = helpers.open_sample("cube")
         scene.edgelight.use_lines = True
-        # A second view layer without the cube: the export draws the current layer only.
+        # The cube only in a second view layer, the current one: the export draws the current
+        # layer, not the first that renders.
         parts = bpy.data.collections.new("Parts")
         scene.collection.children.link(parts)
         cube = bpy.data.objects["Cube"]
         parts.objects.link(cube)
         scene.collection.objects.unlink(cube)
-        scene.view_layers.new("Second").layer_collection.children["Parts"].exclude = True
+        scene.view_layers[0].layer_collection.children["Parts"].exclude = True
+        second = scene.view_layers.new("Second")
         folder = tempfile.mkdtemp(prefix="edgelight_svg_")
         path = os.path.join(folder, "export.svg")
         helpers.addon().host.engine.capture = True
-        bpy.ops.edgelight.export_svg(filepath=path)
+        with bpy.context.temp_override(view_layer=second):
+            bpy.ops.edgelight.export_svg(filepath=path)
         self.assertEqual(ET.parse(path).getroot().tag, f"{{{SVG_NS}}}svg")
         self.assertEqual(os.listdir(folder), ["export.svg"])
         self.assertGreater(len(list(ET.parse(path).getroot().iter(f"{{{SVG_NS}}}polyline"))), 0, "the cube's lines")
@@ -152,6 +155,12 @@ class Document(unittest.TestCase):
         self.assertEqual(bpy.context.window_manager.edgelight_svg_export.path, "")
         os.remove(path)
         bpy.ops.render.render()
+        self.assertEqual(os.listdir(folder), [])
+        # A current layer that does not render: said, nothing written.
+        second.use = False
+        with bpy.context.temp_override(view_layer=second), self.assertRaises(RuntimeError) as raised:
+            bpy.ops.edgelight.export_svg(filepath=path)
+        self.assertIn("does not render", str(raised.exception))
         self.assertEqual(os.listdir(folder), [])
 
 
