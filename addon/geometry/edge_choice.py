@@ -38,7 +38,7 @@ class Choice(NamedTuple):
 
 
 def same_edges(a, b):
-    """Whether two choose_edges results draw the same edges (slots, counts, radii, positions)."""
+    """Whether two choices' edges (Choice.edges) draw the same edges (slots, counts, radii, positions)."""
     if a.keys() != b.keys():
         return False
     return all(len(a[k]) == len(b[k]) and np.array_equal(a[k].radius, b[k].radius) and np.array_equal(a[k].p0, b[k].p0)
@@ -46,14 +46,9 @@ def same_edges(a, b):
 
 
 def choice_key(shading):
-    """What choose_edges reads of the slots' shading (the material's name for the radius clamp
+    """What choose reads of the slots' shading (the material's name for the radius clamp
     notes): equal keys choose the same edges and record the same notes."""
     return tuple((s.enabled, s.radius, s.K, s.rules, s.angle_deg, s.material) for s in shading)
-
-
-def choose_edges(d, shading):
-    """choose(d, shading).edges."""
-    return choose(d, shading).edges
 
 
 def choose(d, shading):

@@ -1,4 +1,4 @@
-"""The numpy copy of which edges each material slot rounds (the rule in edge_choice.choose_edges)
+"""The numpy copy of which edges each material slot rounds (the rule in edge_choice.choose)
 that the add-on ran until the library took it over (native/src/edge_rules.cpp, el_edge_rules): the
 reference test_pure_rules.py holds the library to. Not loaded by the add-on."""
 import numpy as np

@@ -1,5 +1,5 @@
 """The add-on's pure rules in plain Python (no Blender), on inputs small enough to know the answer:
-which edges each material rounds (edge_choice.choose_edges), the taper parameter of a line's
+which edges each material rounds (edge_choice.choose), the taper parameter of a line's
 ends (lines.taper_params), the first two faces of each edge (edge_data.first_two_faces), and
 the crease rule, which the add-on asks of the library (lines.crease_edges; needs the built
 library: EDGELIGHT_LIBRARY, which ctest sets).
@@ -106,6 +106,11 @@ def edges_of(angles, sharp=None, bevel=None, flags=None, slots=(0, 0)):
         sharp=np.array(sharp if sharp is not None else [False] * n),
         bevel=np.array(bevel if bevel is not None else [0.0] * n, np.float32),
         surface_id=np.arange(1, 2 * n + 1, dtype=np.uint32))
+
+
+def choose_edges(d, shading):
+    """The edges edge_choice.choose picks, by slot."""
+    return edge_choice.choose(d, shading).edges
 
 
 def chosen(result):
@@ -255,24 +260,24 @@ class EdgeRulesAgainstTheReference(unittest.TestCase):
 
 class ChooseEdges(unittest.TestCase):
     def test_angle_rule_rounds_edges_past_the_angle(self):
-        got = edge_choice.choose_edges(edges_of([10.0, 30.0, 31.0, 90.0]), [Shading()])
+        got = choose_edges(edges_of([10.0, 30.0, 31.0, 90.0]), [Shading()])
         self.assertEqual(chosen(got), {0: ([2, 3], [np.float32(material_defaults.RADIUS)] * 2)})
 
     def test_sharp_and_bevel_rules_and_the_bevel_weight_scaling_the_radius(self):
         d = edges_of([5.0, 5.0, 5.0, 60.0], sharp=[True, False, False, False], bevel=[0.0, 0.5, 0.0, 0.5])
-        got = chosen(edge_choice.choose_edges(d, [Shading(radius=0.02)]))
+        got = chosen(choose_edges(d, [Shading(radius=0.02)]))
         # Edge 1 is picked by its bevel weight alone (radius x weight); edge 3 by its angle too
         # (the full radius); edge 2 by nothing.
         self.assertEqual(got[0][0], [0, 1, 3])
         np.testing.assert_allclose(got[0][1], [0.02, 0.01, 0.02])
-        none = chosen(edge_choice.choose_edges(d, [Shading(rules=frozenset({'SHARP'}))]))
+        none = chosen(choose_edges(d, [Shading(rules=frozenset({'SHARP'}))]))
         self.assertEqual(none[0][0], [0])
 
     def test_only_usable_manifold_edges_with_two_faces(self):
         flags = [MANIFOLD, MANIFOLD | native.EDGE_DEGENERATE, native.EDGE_NON_MANIFOLD, native.EDGE_BORDER]
         d = edges_of([60.0] * 4, flags=flags)
         d.face_b[3] = -1  # the border edge's one face
-        self.assertEqual(chosen(edge_choice.choose_edges(d, [Shading()]))[0][0], [0])
+        self.assertEqual(chosen(choose_edges(d, [Shading()]))[0][0], [0])
 
     def test_between_two_materials(self):
         # Edge 0: both round, only the second's angle picks it, smaller radius wins; edge 1: the
@@ -281,18 +286,18 @@ class ChooseEdges(unittest.TestCase):
         d = edges_of([40.0, 60.0, 60.0, 60.0], slots=[(0, 1), (0, 2), (0, 3), (1, 0)])
         shading = [Shading(radius=0.03, angle_deg=50.0), Shading(radius=0.02),
                    Shading(enabled=False), Shading(K=0.0)]
-        self.assertEqual(chosen(edge_choice.choose_edges(d, shading)),
+        self.assertEqual(chosen(choose_edges(d, shading)),
                          {0: ([0], [np.float32(0.02)]), 1: ([3], [np.float32(0.02)])})
 
     def test_bands_carry_their_faces_surface_ids(self):
-        got = edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading()])
+        got = choose_edges(edges_of([60.0, 60.0]), [Shading()])
         self.assertEqual(got[0].faces.tolist(), [[1.0, 2.0], [3.0, 4.0]])
 
     def test_same_edges(self):
-        a = edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading()])
-        self.assertTrue(edge_choice.same_edges(a, edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading()])))
-        self.assertFalse(edge_choice.same_edges(a, edge_choice.choose_edges(edges_of([60.0, 60.0]), [Shading(radius=0.02)])))
-        self.assertFalse(edge_choice.same_edges(a, edge_choice.choose_edges(edges_of([60.0, 10.0]), [Shading()])))
+        a = choose_edges(edges_of([60.0, 60.0]), [Shading()])
+        self.assertTrue(edge_choice.same_edges(a, choose_edges(edges_of([60.0, 60.0]), [Shading()])))
+        self.assertFalse(edge_choice.same_edges(a, choose_edges(edges_of([60.0, 60.0]), [Shading(radius=0.02)])))
+        self.assertFalse(edge_choice.same_edges(a, choose_edges(edges_of([60.0, 10.0]), [Shading()])))
 
 
 class RadiusClampCounts(unittest.TestCase):
